@@ -1,0 +1,67 @@
+"""sim: a headless pybullet world for two (or more) NAO-sized robots and a blue table.
+
+Nothing here imports hfsm or behaviours; pybullet is imported only inside this package.
+Each `World` owns its own `p.DIRECT` client (no module-level state); close it when done.
+
+Public API (what the behaviours layer uses)::
+
+    from sim import World, load_scenario
+    world = World(load_scenario("opposite_long_side"), seed=0,
+                  physics_hz=120, image_size=(160, 120),
+                  radio_latency=0.1, radio_loss=0.0, success_distance=0.15,
+                  recorder=None)               # or sim.recorder.Recorder(...)
+    world.advance(0.05)                        # step physics for 0.05 s (6 steps at 120 Hz)
+    world.time                                 # simulated seconds
+    world.robots: dict[str, Robot]             # scenario order
+    world.radio: Radio                         # send(sender, to, payload, t) / deliver(t)
+    world.score() -> dict                      # success, table_wall_distance, dropped,
+                                               # robot_collisions, time, and a few extras
+    world.truth                                # ground truth: scorer, recorder, tests ONLY
+    world.close()                              # also a context manager
+
+    robot = world.robots["r1"]                 # what a robot commands and senses:
+    robot.set_velocity(forward, sideways, turn)  # m/s, m/s (left +), rad/s (ccw +); clamped,
+    robot.stop()                               #   held until changed
+    robot.set_head(yaw, pitch); robot.head(); robot.head_settled()   # rad; pitch down +
+    robot.odometry() -> (x, y, yaw)            # own start frame, seeded drift
+    robot.image("forward" | "down") -> np.ndarray  # H x W x 3 uint8 RGB, rendered now
+    robot.camera_model(camera) -> CameraModel  # fx, fy, cx, cy, fov, position, yaw, pitch;
+                                               #   ray(), ground_point(), project()
+    robot.arms_lower(); robot.arms_lift(height)  # hand height above the floor, metres
+    robot.arms_state() -> ArmState(height, target, settled)
+    robot.holding() -> bool                    # the hands carry the table
+    robot.bumped() -> bool                     # body touched something in the last advance
+
+Scenarios: `scenario_from_dict(data)` validates parsed YAML, `resolve(name_or_path)` finds
+a shipped scenario by name or a file by path, `load_scenario(name_or_path)` does both.
+The default scenario is `DEFAULT_SCENARIO` ("opposite_long_side").
+
+The motion, camera and body profile is in sim/profile.py and sim/README.md.
+"""
+
+from sim.camera import CameraModel
+from sim.radio import Radio
+from sim.robot import ArmState, Robot
+from sim.scenario import (
+    DEFAULT_SCENARIO,
+    Scenario,
+    load_scenario,
+    resolve,
+    scenario_from_dict,
+    scenario_names,
+)
+from sim.world import World
+
+__all__ = [
+    "DEFAULT_SCENARIO",
+    "ArmState",
+    "CameraModel",
+    "Radio",
+    "Robot",
+    "Scenario",
+    "World",
+    "load_scenario",
+    "resolve",
+    "scenario_from_dict",
+    "scenario_names",
+]

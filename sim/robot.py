@@ -1,0 +1,167 @@
+"""Robot: what one robot can command and sense, and nothing about the world's poses."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import pybullet as p
+
+from sim.body import ARMS, HEAD, NECK, RobotBody, drive_joint, yaw_of
+from sim.camera import CameraModel, camera_model, camera_spec, render
+from sim.odometry import Odometry, wrap
+from sim.profile import MotionProfile
+
+LEASH_XY, LEASH_YAW = 0.02, 0.1
+SETTLED_ANGLE, SETTLED_HEIGHT = 0.01, 0.002
+
+
+def _clamp(value: float, low: float, high: float) -> float:
+    return max(low, min(high, value))
+
+
+@dataclass(frozen=True)
+class ArmState:
+    """Hand height above the floor (m), the commanded height, and whether they are there."""
+
+    height: float
+    target: float
+    settled: bool
+
+
+class Robot:
+    """Commands are held until changed; all readings are what the robot itself could sense.
+
+    Created by `World`; behaviours never build one."""
+
+    def __init__(self, cid: int, name: str, body: RobotBody, motion: MotionProfile,
+                 rng: np.random.Generator, image_size: tuple[int, int],
+                 holding: Callable[[], bool]) -> None:
+        self.name = name
+        self.profile = motion
+        self._cid, self._body, self._g = cid, body, body.geometry
+        self._image_size = image_size
+        self._holding = holding
+        self._cmd = (0.0, 0.0, 0.0)
+        pose = self._true_pose()
+        self._target = pose
+        self._odometry = Odometry(rng, pose)
+        self._head_target = (0.0, 0.0)
+        self._arm_target = motion.arm_low
+        self._bumped = False
+
+    # motion
+    def set_velocity(self, forward: float, sideways: float, turn: float) -> None:
+        """Walk velocity in the body frame (m/s forward, m/s to the left, rad/s counter-
+        clockwise), clamped to the profile and held until changed."""
+        m = self.profile
+        self._cmd = (_clamp(forward, -m.backward_max, m.forward_max),
+                     _clamp(sideways, -m.sideways_max, m.sideways_max),
+                     _clamp(turn, -m.turn_max, m.turn_max))
+
+    def stop(self) -> None:
+        self._cmd = (0.0, 0.0, 0.0)
+
+    def velocity(self) -> tuple[float, float, float]:
+        """The commanded (clamped) velocity."""
+        return self._cmd
+
+    def odometry(self) -> tuple[float, float, float]:
+        """(x, y, yaw) in the robot's own start frame, with seeded drift."""
+        return self._odometry.pose()
+
+    def bumped(self) -> bool:
+        """True if the body touched something during the last `World.advance`."""
+        return self._bumped
+
+    # head
+    def set_head(self, yaw: float, pitch: float) -> None:
+        """Head joint targets in radians (yaw left positive, pitch down positive), clamped."""
+        m = self.profile
+        self._head_target = (_clamp(yaw, -m.head_yaw_max, m.head_yaw_max),
+                             _clamp(pitch, m.head_pitch_min, m.head_pitch_max))
+        drive_joint(self._cid, self._body.body, NECK, self._head_target[0], m.head_speed)
+        drive_joint(self._cid, self._body.body, HEAD, self._head_target[1], m.head_speed)
+
+    def head(self) -> tuple[float, float]:
+        """Current head joint angles (yaw, pitch) in radians."""
+        states = p.getJointStates(self._body.body, [NECK, HEAD], physicsClientId=self._cid)
+        return (float(states[0][0]), float(states[1][0]))
+
+    def head_settled(self) -> bool:
+        yaw, pitch = self.head()
+        return (abs(yaw - self._head_target[0]) < SETTLED_ANGLE
+                and abs(pitch - self._head_target[1]) < SETTLED_ANGLE)
+
+    # cameras
+    def camera_model(self, camera: str = "forward") -> CameraModel:
+        """Intrinsics and mounting (height, pitch, yaw incl. the head joints) in the body frame."""
+        yaw, pitch = self.head()
+        return camera_model(camera_spec(camera), self._g, self._image_size, yaw, pitch)
+
+    def image(self, camera: str = "forward") -> np.ndarray:
+        """Render this camera now: H x W x 3 uint8 RGB."""
+        rgb, _ = self._render(camera, segmentation=False)
+        return rgb
+
+    def _render(self, camera: str, *, segmentation: bool) -> tuple[np.ndarray, np.ndarray | None]:
+        pos, orn = p.getBasePositionAndOrientation(self._body.body, physicsClientId=self._cid)
+        return render(self._cid, self.camera_model(camera), pos, orn, segmentation=segmentation)
+
+    # arms
+    def arms_lower(self) -> None:
+        """Lower the hands to the lowest (carry-ready) height; lands a held table."""
+        self.arms_lift(self.profile.arm_low)
+
+    def arms_lift(self, height: float) -> None:
+        """Move the hands to `height` metres above the floor (clamped to the arm range)."""
+        m = self.profile
+        self._arm_target = _clamp(height, m.arm_low, m.arm_high)
+        drive_joint(self._cid, self._body.body, ARMS, self._arm_target - self._g.hover,
+                    m.arm_speed)
+
+    def arms_state(self) -> ArmState:
+        q = p.getJointState(self._body.body, ARMS, physicsClientId=self._cid)[0]
+        height = float(q) + self._g.hover
+        return ArmState(height, self._arm_target, abs(height - self._arm_target) < SETTLED_HEIGHT)
+
+    def holding(self) -> bool:
+        """True while the hands carry a load (the table gripped from below)."""
+        return self._holding()
+
+    # called by World
+    def _true_pose(self) -> tuple[float, float, float]:
+        pos, orn = p.getBasePositionAndOrientation(self._body.body, physicsClientId=self._cid)
+        return (pos[0], pos[1], yaw_of(orn))
+
+    def _arms_active(self) -> bool:
+        return self._arm_target > self.profile.arm_low + 1e-6
+
+    def _arms_lowering(self) -> bool:
+        return self._arm_target < self.arms_state().height - SETTLED_HEIGHT
+
+    def _pre_step(self, dt: float) -> None:
+        forward, sideways, turn = self._cmd
+        if forward == 0.0 and sideways == 0.0 and turn == 0.0:
+            return
+        x, y, yaw = self._target
+        c, s = math.cos(yaw), math.sin(yaw)
+        x, y, yaw = x + (c * forward - s * sideways) * dt, y + (s * forward + c * sideways) * dt, \
+            yaw + turn * dt
+        ax, ay, ayaw = self._true_pose()
+        dx, dy = x - ax, y - ay
+        dist = math.hypot(dx, dy)
+        if dist > LEASH_XY:
+            x, y = ax + dx * LEASH_XY / dist, ay + dy * LEASH_XY / dist
+        yaw = ayaw + _clamp(wrap(yaw - ayaw), -LEASH_YAW, LEASH_YAW)
+        self._target = (x, y, yaw)
+        orn = (0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2))
+        p.changeConstraint(self._body.mocap, jointChildPivot=[x, y, self._g.hover],
+                           jointChildFrameOrientation=orn, maxForce=self._g.base_max_force,
+                           physicsClientId=self._cid)
+
+    def _after_advance(self, bumped: bool) -> None:
+        self._odometry.update(self._true_pose())
+        self._bumped = bumped

@@ -1,0 +1,118 @@
+"""Scenario files: room, table and robot starts, as a strict pydantic v2 model.
+
+The engine reads YAML itself (with line:col errors) and passes the parsed mapping to
+`scenario_from_dict`; `load_scenario` is a plain `yaml.safe_load` convenience.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from importlib import resources
+from pathlib import Path
+from typing import Annotated, Any
+
+import numpy as np
+import yaml
+from pydantic import BaseModel, ConfigDict, Field, StringConstraints, model_validator
+
+DEFAULT_SCENARIO = "opposite_long_side"
+RobotName = Annotated[str, StringConstraints(pattern=r"^[a-z][a-z0-9_]*$")]
+
+
+class _Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid", strict=True, frozen=True)
+
+
+class Room(_Strict):
+    width: float = Field(5.0, gt=1.5, le=50.0, description="extent along x, metres")
+    depth: float = Field(5.0, gt=1.5, le=50.0, description="extent along y, metres")
+    wall_height: float = Field(2.0, gt=0.3, le=5.0)
+
+
+class TableSpec(_Strict):
+    x: float = 0.0
+    y: float = 0.0
+    yaw: float = Field(0.0, description="degrees, long side along x at 0")
+    length: float = Field(0.8, gt=0.2, le=3.0)
+    width: float = Field(0.5, gt=0.2, le=2.0)
+    height: float = Field(0.33, ge=0.25, le=0.40, description="floor to top surface")
+    mass: float = Field(2.0, gt=0.1, le=20.0)
+
+    @model_validator(mode="after")
+    def _long_side_is_length(self) -> TableSpec:
+        if self.width > self.length:
+            raise ValueError("table width must not exceed its length (length is the long side)")
+        return self
+
+
+class RobotStart(_Strict):
+    x: float
+    y: float
+    yaw: float = Field(0.0, description="degrees, 0 faces +x")
+
+
+class Jitter(_Strict):
+    position: float = Field(0.0, ge=0.0, le=1.0, description="max offset per axis, metres")
+    yaw: float = Field(0.0, ge=0.0, le=180.0, description="max offset, degrees")
+
+
+class Scenario(_Strict):
+    description: str = ""
+    room: Room = Room()
+    table: TableSpec = TableSpec()
+    robots: dict[RobotName, RobotStart] = Field(min_length=1, max_length=5)
+    jitter: Jitter = Jitter()
+
+    @model_validator(mode="after")
+    def _inside_room(self) -> Scenario:
+        half_w, half_d = self.room.width / 2, self.room.depth / 2
+        radius = math.hypot(self.table.length, self.table.width) / 2
+        if abs(self.table.x) + radius > half_w or abs(self.table.y) + radius > half_d:
+            raise ValueError("table does not fit inside the room")
+        for name, start in self.robots.items():
+            if abs(start.x) > half_w - 0.2 or abs(start.y) > half_d - 0.2:
+                raise ValueError(f"robot {name!r} starts outside the room or inside a wall")
+        return self
+
+    def starts(self, seed: int) -> dict[str, tuple[float, float, float]]:
+        """Robot start poses (x, y, yaw radians) with the seeded jitter applied, in order."""
+        rng = np.random.default_rng([seed, 0x5CE])
+        poses: dict[str, tuple[float, float, float]] = {}
+        for name, start in self.robots.items():
+            dx, dy = rng.uniform(-1.0, 1.0, 2) * self.jitter.position
+            dyaw = rng.uniform(-1.0, 1.0) * self.jitter.yaw
+            poses[name] = (start.x + dx, start.y + dy, math.radians(start.yaw + dyaw))
+        return poses
+
+
+def scenario_from_dict(data: Mapping[str, Any]) -> Scenario:
+    """Validate already-parsed scenario data (raises pydantic.ValidationError)."""
+    return Scenario.model_validate(dict(data))
+
+
+def scenario_names() -> list[str]:
+    """Names of the scenarios shipped in sim/scenarios/."""
+    folder = resources.files("sim") / "scenarios"
+    return sorted(p.name[:-5] for p in folder.iterdir() if p.name.endswith(".yaml"))
+
+
+def resolve(name_or_path: str | Path) -> Path:
+    """A shipped scenario name ("ahead_behind") or a path to a YAML file -> existing path."""
+    text = str(name_or_path)
+    looks_like_path = Path(text).suffix in {".yaml", ".yml"} or "/" in text or "\\" in text
+    if looks_like_path:
+        path = Path(text)
+        if not path.is_file():
+            raise FileNotFoundError(f"scenario file not found: {text}")
+        return path
+    shipped = Path(str(resources.files("sim") / "scenarios" / f"{text}.yaml"))
+    if shipped.is_file():
+        return shipped
+    raise FileNotFoundError(f"unknown scenario {text!r}; shipped: {', '.join(scenario_names())}")
+
+
+def load_scenario(name_or_path: str | Path = DEFAULT_SCENARIO) -> Scenario:
+    """Resolve, read with yaml.safe_load and validate."""
+    with resolve(name_or_path).open(encoding="utf-8") as handle:
+        return scenario_from_dict(yaml.safe_load(handle) or {})

@@ -1,0 +1,85 @@
+"""Ground-truth scoring: contacts watched every physics step, table and robots at the end."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import pybullet as p
+
+from sim.truth import Truth
+
+TOUCH = 0.001
+FALLEN = math.radians(45.0)
+TIPPED = math.radians(30.0)
+
+
+class Scorer:
+    """Counts contact episodes (a run of consecutive physics steps with contact)."""
+
+    def __init__(self, cid: int, truth: Truth, success_distance: float = 0.15) -> None:
+        self._cid = cid
+        self._truth = truth
+        self.success_distance = success_distance
+        self._names = list(truth.robot_bodies)
+        self._ids = {truth.robot_id(n): n for n in self._names}
+        self._touching: set[tuple[str, str, str]] = set()
+        self.episodes: dict[str, int] = {"robot": 0, "table": 0, "wall": 0}
+        self.bumps: dict[str, bool] = dict.fromkeys(self._names, False)
+        self.dropped = False
+        self.fallen: set[str] = set()
+
+    def _kind(self, other: int) -> str | None:
+        if other in self._ids:
+            return "robot"
+        if other == self._truth.table_id:
+            return "table"
+        if other in self._truth.room_bodies.walls:
+            return "wall"
+        return None
+
+    def observe(self) -> None:
+        """Call after every physics step."""
+        now: set[tuple[str, str, str]] = set()
+        for name in self._names:
+            for contact in p.getContactPoints(bodyA=self._truth.robot_id(name),
+                                              physicsClientId=self._cid):
+                if contact[8] > TOUCH:
+                    continue
+                other = contact[2]
+                kind = self._kind(other)
+                if kind is not None:
+                    self.bumps[name] = True
+                    partner = self._ids.get(other, "")
+                    now.add((kind, min(name, partner), max(name, partner)) if partner
+                            else (kind, name, ""))
+        for key in now - self._touching:
+            self.episodes[key[0]] += 1
+        self._touching = now
+
+    def take_bumps(self) -> dict[str, bool]:
+        bumps, self.bumps = self.bumps, dict.fromkeys(self._names, False)
+        return bumps
+
+    def check_poses(self) -> None:
+        """Call once per control tick: records a tipped table and fallen robots."""
+        if self._truth.table_tilt() > TIPPED:
+            self.dropped = True
+        for name in self._names:
+            if self._truth.robot_tilt(name) > FALLEN:
+                self.fallen.add(name)
+
+    def score(self, time: float) -> dict[str, Any]:
+        distance = self._truth.table_wall_distance()
+        robot_hits = self.episodes["robot"]
+        success = distance <= self.success_distance and not self.dropped and robot_hits == 0
+        return {
+            "success": bool(success),
+            "table_wall_distance": round(distance, 4),
+            "dropped": self.dropped,
+            "robot_collisions": robot_hits,
+            "robot_table_collisions": self.episodes["table"],
+            "robot_wall_collisions": self.episodes["wall"],
+            "robots_fallen": sorted(self.fallen),
+            "time": round(time, 4),
+        }

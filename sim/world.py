@@ -1,0 +1,117 @@
+"""World: one pybullet DIRECT client holding a room, a table and the scenario's robots."""
+
+from __future__ import annotations
+
+from functools import partial
+from typing import Any, Protocol
+
+import numpy as np
+import pybullet as p
+
+from sim.body import build_robot
+from sim.lifting import Lifting
+from sim.profile import DEFAULT_BODY, DEFAULT_MOTION, ROBOT_COLOURS, BodyGeometry, MotionProfile
+from sim.radio import Radio
+from sim.robot import Robot
+from sim.room import build_room, build_table
+from sim.scenario import Scenario
+from sim.scorer import Scorer
+from sim.truth import Truth
+
+
+class Recorder(Protocol):
+    every: float
+
+    def capture(self, world: World) -> None: ...
+    def close(self) -> None: ...
+
+
+class World:
+    """A simulated run. Time starts at 0 and only moves in `advance`."""
+
+    def __init__(self, scenario: Scenario, seed: int = 0, *, physics_hz: int = 120,
+                 image_size: tuple[int, int] = (160, 120), radio_latency: float = 0.1,
+                 radio_loss: float = 0.0, success_distance: float = 0.15,
+                 recorder: Recorder | None = None, motion: MotionProfile = DEFAULT_MOTION,
+                 body: BodyGeometry = DEFAULT_BODY) -> None:
+        self.scenario, self.seed, self.physics_hz = scenario, seed, physics_hz
+        self.image_size = image_size
+        self._cid: int | None = p.connect(p.DIRECT)
+        cid = self._cid
+        p.setGravity(0.0, 0.0, -9.81, physicsClientId=cid)
+        p.setTimeStep(1.0 / physics_hz, physicsClientId=cid)
+        p.setPhysicsEngineParameter(deterministicOverlappingPairs=1, physicsClientId=cid)
+        room = build_room(cid, scenario.room)
+        table = build_table(cid, scenario.table)
+        starts = scenario.starts(seed)
+        bodies = {name: build_robot(cid, body, motion, ROBOT_COLOURS[i % len(ROBOT_COLOURS)],
+                                    starts[name]) for i, name in enumerate(starts)}
+        self._lifting = Lifting(cid, table, bodies)
+        self.robots: dict[str, Robot] = {
+            name: Robot(cid, name, b, motion, np.random.default_rng([seed, i, 0x0D0]),
+                        image_size, partial(self._lifting.holding, name))
+            for i, (name, b) in enumerate(bodies.items())}
+        self._lifting.bind(self.robots)
+        self.truth = Truth(cid, scenario.room, room, table, bodies)
+        self._scorer = Scorer(cid, self.truth, success_distance)
+        self.radio = Radio(radio_latency, radio_loss, seed)
+        self._steps = 0
+        self._recorder = recorder
+        self._next_capture = 0.0
+        self._capture()
+
+    @property
+    def time(self) -> float:
+        return self._steps / self.physics_hz
+
+    @property
+    def client(self) -> int:
+        if self._cid is None:
+            raise RuntimeError("world is closed")
+        return self._cid
+
+    def advance(self, seconds: float) -> None:
+        """Step physics for `seconds` (rounded to whole physics steps) under held commands."""
+        cid, dt = self.client, 1.0 / self.physics_hz
+        end = round((self.time + seconds) * self.physics_hz)
+        robots = list(self.robots.values())
+        while self._steps < end:
+            for robot in robots:
+                robot._pre_step(dt)
+            p.stepSimulation(physicsClientId=cid)
+            self._steps += 1
+            self._lifting.update()
+            self._scorer.observe()
+            self._capture()
+        bumps = self._scorer.take_bumps()
+        for name, robot in self.robots.items():
+            robot._after_advance(bumps[name])
+        self._scorer.check_poses()
+
+    def _capture(self) -> None:
+        if self._recorder is not None and self.time + 1e-9 >= self._next_capture:
+            self._recorder.capture(self)
+            self._next_capture += self._recorder.every
+
+    @property
+    def dropped(self) -> bool:
+        return self._lifting.dropped or self._scorer.dropped
+
+    def score(self) -> dict[str, Any]:
+        """Ground-truth outcome; see sim.scorer.Scorer.score for the keys."""
+        self._scorer.dropped = self.dropped
+        return self._scorer.score(self.time)
+
+    def close(self) -> None:
+        if self._recorder is not None:
+            self._recorder.close()
+            self._recorder = None
+        if self._cid is not None:
+            p.disconnect(physicsClientId=self._cid)
+            self._cid = None
+
+    def __enter__(self) -> World:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
