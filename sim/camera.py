@@ -48,12 +48,12 @@ class CameraModel:
     @property
     def rotation(self) -> np.ndarray:
         """Camera-to-body rotation (camera axes: x along the view, y left, z up)."""
-        return rot_z(self.yaw) @ rot_y(self.pitch)
+        return np.asarray(rot_z(self.yaw) @ rot_y(self.pitch))
 
     def ray(self, u: float, v: float) -> np.ndarray:
         """Unit direction in the body frame of the ray through pixel coordinate (u, v)."""
         d = self.rotation @ np.array([1.0, -(u - self.cx) / self.fx, -(v - self.cy) / self.fy])
-        return d / np.linalg.norm(d)
+        return np.asarray(d / np.linalg.norm(d))
 
     def ground_point(self, u: float, v: float, plane_z: float = 0.0) -> tuple[float, float] | None:
         """Body-frame (x, y) where the ray through (u, v) meets the plane z = plane_z."""

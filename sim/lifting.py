@@ -1,10 +1,12 @@
 """Hands under the table: grips form when a rising hand meets the underside of a long side;
 each grip is a POINT2POINT constraint (force but no torque, like a palm). A table tilted past
-the slip angle slides off every hand and is recorded as dropped."""
+the slip angle slides off every hand and is recorded as dropped; so is a lifted table that
+a hand loses because the robots walked apart (the hand pulled more than STRETCH away)."""
 
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Protocol
 
@@ -15,7 +17,7 @@ from sim.body import ARMS, RobotBody
 from sim.room import TableBody
 
 SLIP_DEG = 20.0
-REACH = 0.15
+REACH = 0.12
 STRETCH = 0.05
 GRIP_TOLERANCE = 0.003
 FLOOR_TOLERANCE = 0.004
@@ -43,7 +45,7 @@ class Lifting:
         self.slip = math.radians(slip_deg)
         self.dropped = False
 
-    def bind(self, arms: dict[str, Arms]) -> None:
+    def bind(self, arms: Mapping[str, Arms]) -> None:
         self._arms = dict(arms)
 
     def holding(self, name: str) -> bool:
@@ -87,8 +89,8 @@ class Lifting:
         level = self._table.underside - GRIP_TOLERANCE
         for index, (loc, height, before) in enumerate(zip(locals_, heights, previous,
                                                           strict=True)):
-            under = (abs(loc[0]) <= spec.length / 2 - 0.02
-                     and spec.width / 2 - REACH <= abs(loc[1]) <= spec.width / 2)
+            to_long, to_short = spec.width / 2 - abs(loc[1]), spec.length / 2 - abs(loc[0])
+            under = 0.0 <= to_long <= REACH and to_long < to_short
             if under and before < level <= height:
                 self._grip(hands, index, loc)
 
@@ -106,6 +108,7 @@ class Lifting:
         for grip in list(hands.grips):
             anchor_world = table[0] + table[1] @ grip[1]
             if np.linalg.norm(anchor_world - points[grip[2]]) > STRETCH:
+                self.dropped = self.dropped or not self._landed(points, table)
                 self._release(hands, grip)
         if hands.grips and self._arms[name]._arms_lowering() and self._landed(points, table):
             for grip in list(hands.grips):
@@ -118,7 +121,7 @@ class Lifting:
                                                 -com_h]) for sx in (1, -1) for sy in (1, -1)]
         middle = (points[0] + points[1]) / 2
         feet.sort(key=lambda foot: float(np.hypot(*(foot - middle)[:2])))
-        return max(feet[0][2], feet[1][2]) < FLOOR_TOLERANCE
+        return bool(max(feet[0][2], feet[1][2]) < FLOOR_TOLERANCE)
 
     def _check_slip(self, rot: np.ndarray) -> None:
         if math.acos(max(-1.0, min(1.0, float(rot[2, 2])))) <= self.slip:

@@ -43,7 +43,7 @@ class BodyGeometry:
     hand_y: float = 0.10
     arm_thickness: float = 0.04
     base_max_force: float = 120.0
-    hand_max_force: float = 80.0
+    hand_max_force: float = 30.0
 
 
 @dataclass(frozen=True)

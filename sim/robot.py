@@ -15,6 +15,7 @@ from sim.odometry import Odometry, wrap
 from sim.profile import MotionProfile
 
 LEASH_XY, LEASH_YAW = 0.02, 0.1
+UNWIND_XY, UNWIND_YAW = 0.01, 0.05
 SETTLED_ANGLE, SETTLED_HEIGHT = 0.01, 0.002
 
 
@@ -57,12 +58,15 @@ class Robot:
         """Walk velocity in the body frame (m/s forward, m/s to the left, rad/s counter-
         clockwise), clamped to the profile and held until changed."""
         m = self.profile
-        self._cmd = (_clamp(forward, -m.backward_max, m.forward_max),
-                     _clamp(sideways, -m.sideways_max, m.sideways_max),
-                     _clamp(turn, -m.turn_max, m.turn_max))
+        cmd = (_clamp(forward, -m.backward_max, m.forward_max),
+               _clamp(sideways, -m.sideways_max, m.sideways_max),
+               _clamp(turn, -m.turn_max, m.turn_max))
+        if cmd != self._cmd:
+            self._cmd = cmd
+            self._unwind()
 
     def stop(self) -> None:
-        self._cmd = (0.0, 0.0, 0.0)
+        self.set_velocity(0.0, 0.0, 0.0)
 
     def velocity(self) -> tuple[float, float, float]:
         """The commanded (clamped) velocity."""
@@ -142,6 +146,21 @@ class Robot:
     def _arms_lowering(self) -> bool:
         return self._arm_target < self.arms_state().height - SETTLED_HEIGHT
 
+    def _unwind(self) -> None:
+        """Drop the lead a blocked walk built up, so a new command starts from where we are."""
+        ax, ay, ayaw = self._true_pose()
+        x, y, yaw = self._target
+        if math.hypot(x - ax, y - ay) > UNWIND_XY or abs(wrap(yaw - ayaw)) > UNWIND_YAW:
+            self._target = (ax, ay, ayaw)
+            self._push_target()
+
+    def _push_target(self) -> None:
+        x, y, yaw = self._target
+        orn = (0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2))
+        p.changeConstraint(self._body.mocap, jointChildPivot=[x, y, self._g.hover],
+                           jointChildFrameOrientation=orn, maxForce=self._g.base_max_force,
+                           physicsClientId=self._cid)
+
     def _pre_step(self, dt: float) -> None:
         forward, sideways, turn = self._cmd
         if forward == 0.0 and sideways == 0.0 and turn == 0.0:
@@ -157,10 +176,7 @@ class Robot:
             x, y = ax + dx * LEASH_XY / dist, ay + dy * LEASH_XY / dist
         yaw = ayaw + _clamp(wrap(yaw - ayaw), -LEASH_YAW, LEASH_YAW)
         self._target = (x, y, yaw)
-        orn = (0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2))
-        p.changeConstraint(self._body.mocap, jointChildPivot=[x, y, self._g.hover],
-                           jointChildFrameOrientation=orn, maxForce=self._g.base_max_force,
-                           physicsClientId=self._cid)
+        self._push_target()
 
     def _after_advance(self, bumped: bool) -> None:
         self._odometry.update(self._true_pose())

@@ -67,8 +67,10 @@ class Scenario(_Strict):
     @model_validator(mode="after")
     def _inside_room(self) -> Scenario:
         half_w, half_d = self.room.width / 2, self.room.depth / 2
-        radius = math.hypot(self.table.length, self.table.width) / 2
-        if abs(self.table.x) + radius > half_w or abs(self.table.y) + radius > half_d:
+        t = self.table
+        c, s = abs(math.cos(math.radians(t.yaw))), abs(math.sin(math.radians(t.yaw)))
+        reach_x, reach_y = (c * t.length + s * t.width) / 2, (s * t.length + c * t.width) / 2
+        if abs(t.x) + reach_x > half_w + 1e-9 or abs(t.y) + reach_y > half_d + 1e-9:
             raise ValueError("table does not fit inside the room")
         for name, start in self.robots.items():
             if abs(start.x) > half_w - 0.2 or abs(start.y) > half_d - 0.2:
