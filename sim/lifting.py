@@ -96,6 +96,8 @@ class Lifting:
 
     def _grip(self, hands: _Hands, index: int, anchor: np.ndarray) -> None:
         g = hands.body.geometry
+        p.changeDynamics(self._table.body, -1, activationState=p.ACTIVATION_STATE_WAKE_UP,
+                         physicsClientId=self._cid)
         hand = [g.hand_x, (1 if index == 0 else -1) * g.hand_y, 0.0]
         cid = p.createConstraint(self._table.body, -1, hands.body.body, ARMS,
                                  p.JOINT_POINT2POINT, [0, 0, 0], anchor.tolist(), hand,

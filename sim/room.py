@@ -82,5 +82,6 @@ def build_table(cid: int, spec: TableSpec) -> TableBody:
     orn = p.getQuaternionFromEuler([0.0, 0.0, math.radians(spec.yaw)])
     body = p.createMultiBody(spec.mass, col, vis, basePosition=(spec.x, spec.y, com_z),
                              baseOrientation=orn, physicsClientId=cid)
-    p.changeDynamics(body, -1, lateralFriction=0.5, physicsClientId=cid)
+    p.changeDynamics(body, -1, lateralFriction=0.5,
+                     activationState=p.ACTIVATION_STATE_ENABLE_SLEEPING, physicsClientId=cid)
     return TableBody(body=int(body), spec=spec, com_height=com_z)
