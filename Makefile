@@ -1,0 +1,26 @@
+# Two commands do all the set-up on a machine with only Python 3.11: `make run` and `make test`.
+PYTHON ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+STAMP := $(VENV)/.installed
+
+.PHONY: run test lint figures clean
+
+$(STAMP): pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet -e '.[dev]'
+	touch $(STAMP)
+
+run: $(STAMP)
+	$(BIN)/hfsm-run machines/move_furniture.yaml
+
+test: $(STAMP)
+	$(BIN)/python -m pytest
+
+lint: $(STAMP)
+	$(BIN)/ruff check hfsm behaviours sim tools tests
+	$(BIN)/mypy hfsm
+
+clean:
+	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache

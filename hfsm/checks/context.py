@@ -1,0 +1,64 @@
+"""What every check reads: the loaded machines, the behaviours they may call, and where things stand."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from functools import cached_property
+
+from hfsm.builtins import BUILTINS
+from hfsm.errors import Finding, Severity
+from hfsm.library import MachineFile
+from hfsm.model import CallState, ChoiceState, Machine
+from hfsm.registry import Registry
+from hfsm.spec import BehaviourSpec, ParamSpec
+from hfsm.yamlio import Path_
+
+
+def machine_spec(machine: MachineFile) -> BehaviourSpec:
+    m = machine.model
+    params = {
+        name: ParamSpec(name, p.type, p.required, p.default, p.doc or "") for name, p in m.params.items()
+    }
+    return BehaviourSpec(
+        machine.name,
+        "machine",
+        params,
+        tuple(m.all_outcomes),
+        m.failure_outcomes,
+        frozenset(m.outputs),
+        m.doc or "",
+    )
+
+
+@dataclass
+class CheckContext:
+    machines: dict[str, MachineFile]
+    registry: Registry
+    findings: list[Finding] = field(default_factory=list)
+
+    @cached_property
+    def specs(self) -> dict[str, BehaviourSpec]:
+        specs = dict(BUILTINS)
+        specs.update({p.spec.name: p.spec for p in self.registry})
+        specs.update({name: machine_spec(m) for name, m in self.machines.items()})
+        return specs
+
+    def error(self, machine: MachineFile, path: Path_, code: str, message: str, *, key: bool = False) -> None:
+        self.findings.append(machine.doc.finding(path, code, message, key=key))
+
+    def warn(self, machine: MachineFile, path: Path_, code: str, message: str) -> None:
+        f = machine.doc.finding(path, code, message)
+        self.findings.append(Finding(f.file, f.line, f.col, f.code, f.message, Severity.WARNING))
+
+
+def call_states(m: Machine) -> Iterator[tuple[str, CallState]]:
+    for name, state in m.states.items():
+        if isinstance(state, CallState):
+            yield name, state
+
+
+def choice_states(m: Machine) -> Iterator[tuple[str, ChoiceState]]:
+    for name, state in m.states.items():
+        if isinstance(state, ChoiceState):
+            yield name, state

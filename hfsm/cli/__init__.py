@@ -1,0 +1,1 @@
+"""Command-line entry points: each a `main(argv) -> int`, the only code that prints."""

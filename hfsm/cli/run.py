@@ -1,0 +1,171 @@
+"""`hfsm-run`: check a machine file and run it (SPEC section 10)."""
+
+from __future__ import annotations
+
+import argparse
+import logging
+import math
+import sys
+import traceback
+from collections.abc import Sequence
+from importlib.metadata import entry_points
+from pathlib import Path
+
+from hfsm.cli import report
+from hfsm.cli.params import parse_params
+from hfsm.errors import HfsmError, UsageError, UserError
+from hfsm.load import Loaded, load
+from hfsm.names import is_name
+from hfsm.registry import Registry
+from hfsm.runtime.program import Program
+from hfsm.runtime.run import RunOptions, run
+from hfsm.schema import schema_text
+from hfsm.trace import JsonlTrace
+from hfsm.world import WORLDS_GROUP, NullWorld, World, WorldFactory
+
+
+def _factories() -> dict[str, WorldFactory]:
+    found: dict[str, WorldFactory] = {}
+    for ep in sorted(entry_points(group=WORLDS_GROUP), key=lambda e: e.name):
+        factory = ep.load()()
+        found[factory.name] = factory
+    return found
+
+
+def _positive(text: str) -> float:
+    value = float(text)
+    if not math.isfinite(value) or value <= 0:
+        raise argparse.ArgumentTypeError(f"must be a positive number of seconds, not {text}")
+    return value
+
+
+def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(prog="hfsm-run", description="Check a machine file and run it.")
+    p.add_argument("file", nargs="?", type=Path, help="the top machine file")
+    p.add_argument(
+        "--lib", action="append", type=Path, default=[], metavar="DIR", help="more machine folders"
+    )
+    p.add_argument("--world", choices=["none", *factories], help="default: sim if a primitive needs it")
+    p.add_argument("--agents", help="comma-separated agent names (default: the world's, else 'robot')")
+    p.add_argument("--param", action="append", default=[], metavar="K=V", help="a param of the top machine")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--dt", type=_positive, default=0.05, help="seconds per tick (default 0.05)")
+    p.add_argument("--max-time", type=_positive, default=3600.0, metavar="S", help="default 3600")
+    p.add_argument("--trace", type=Path, metavar="FILE.jsonl", help="write the trace, as the run goes")
+    p.add_argument("--json", action="store_true", help="print one JSON object on stdout")
+    p.add_argument("--check", action="store_true", help="validate and exit")
+    p.add_argument("--strict", action="store_true", help="warnings are errors")
+    p.add_argument("--schema", action="store_true", help="print the JSON Schema of machine files")
+    p.add_argument("--traceback", action="store_true", help="show Python tracebacks of run-time errors")
+    p.add_argument("--quiet", action="store_true", help="no summary table on stderr")
+    for factory in factories.values():
+        factory.add_arguments(p.add_argument_group(f"--world {factory.name}"))
+    return p
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    factories = _factories()
+    args = build_parser(factories).parse_args(argv)
+    logging.basicConfig(level=logging.INFO, format="%(message)s", stream=sys.stderr)
+    try:
+        return _main(args, factories)
+    except (UserError, UsageError) as err:
+        if isinstance(err, UserError):
+            report.findings(err.findings)
+        else:
+            print(f"hfsm-run: {err}", file=sys.stderr)
+        return 2
+
+
+def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
+    if args.schema:
+        sys.stdout.write(schema_text())
+        return 0
+    if args.file is None:
+        raise UsageError("give a machine file (or --schema)")
+    registry = Registry.discover()
+    loaded = load([args.file], libs=args.lib, registry=registry, strict=args.strict)
+    report.findings(loaded.warnings)
+    if args.check:
+        print(f"{args.file}: ok ({len(loaded.machines)} machines checked)", file=sys.stderr)
+        return 0
+    top = loaded.roots[0]
+    params = parse_params(args.param, top.model, top.name)
+    world = _world(args, loaded, registry, factories)
+    try:
+        return _run(args, loaded, registry, world, params)
+    finally:
+        files = world.close()
+        for path in files:
+            print(f"wrote {path}", file=sys.stderr)
+
+
+def _world(
+    args: argparse.Namespace, loaded: Loaded, registry: Registry, factories: dict[str, WorldFactory]
+) -> World:
+    needs = sorted(
+        {p.spec.world for p in registry if p.spec.world and _used(loaded, p.spec.name)}
+    )
+    name = args.world or (needs[0] if needs else "none")
+    wrong = [w for w in needs if w != name]
+    if wrong:
+        raise UsageError(f"these machines call primitives of --world {wrong[0]}, not --world {name}")
+    if name == "none":
+        return NullWorld()
+    return factories[name].create(args, args.seed)
+
+
+def _used(loaded: Loaded, behaviour: str) -> bool:
+    return any(
+        getattr(state, "do", None) == behaviour
+        for mf in loaded.machines.values()
+        for state in mf.model.states.values()
+    )
+
+
+def _agents(args: argparse.Namespace, world: World) -> list[str]:
+    named = world.agent_names()
+    if args.agents is None:
+        return list(named) if named else ["robot"]
+    agents = [a.strip() for a in args.agents.split(",")]
+    bad = [a for a in agents if not is_name(a)]
+    if bad or len(set(agents)) != len(agents):
+        raise UsageError(f"--agents {args.agents!r}: distinct names matching ^[a-z][a-z0-9_]*$")
+    if named and list(named) != agents:
+        raise UsageError(f"--agents: this world's agents are {','.join(named)}")
+    return agents
+
+
+def _run(
+    args: argparse.Namespace, loaded: Loaded, registry: Registry, world: World, params: dict[str, object]
+) -> int:
+    top = loaded.roots[0]
+    options = RunOptions(top.name, _agents(args, world), params, args.seed, args.max_time)
+    program = Program(loaded.machines, registry, args.dt)
+    trace = JsonlTrace(args.trace) if args.trace else None
+    try:
+        result = run(program, world, options, trace)
+    finally:
+        if trace:
+            trace.close()
+    extra = world.report()
+    if args.json:
+        print(report.json_result(result, extra))
+    else:
+        report.text_result(result)
+    if not args.quiet:
+        report.summary(result.stats, args.dt)
+    if result.error:
+        print(f"error: {result.error}", file=sys.stderr)
+        if args.traceback and result.traceback:
+            print(result.traceback, file=sys.stderr, end="")
+    if args.trace:
+        print(f"trace: {args.trace}", file=sys.stderr)
+    return result.exit_code
+
+
+def entry() -> None:
+    sys.exit(main())
+
+
+__all__ = ["HfsmError", "entry", "main", "traceback"]

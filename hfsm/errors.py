@@ -1,0 +1,51 @@
+"""Findings and the error classes: user errors carry findings with positions; bugs stay exceptions."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from enum import StrEnum
+from pathlib import Path
+
+
+class Severity(StrEnum):
+    ERROR = "error"
+    WARNING = "warning"
+
+
+@dataclass(frozen=True, order=True)
+class Finding:
+    """One problem in one file, at a 1-based line and column."""
+
+    file: str
+    line: int
+    col: int
+    code: str
+    message: str
+    severity: Severity = field(default=Severity.ERROR, compare=False)
+
+    def format(self) -> str:
+        return f"{self.file}:{self.line}:{self.col}: {self.severity.value}[{self.code}]: {self.message}"
+
+    def as_error(self) -> Finding:
+        return Finding(self.file, self.line, self.col, self.code, self.message, Severity.ERROR)
+
+
+class HfsmError(Exception):
+    """Root of the errors hfsm raises on purpose."""
+
+
+class UserError(HfsmError):
+    """Bad input: a file, an argument. Printed without a traceback; exit 2."""
+
+    def __init__(self, findings: Iterable[Finding]) -> None:
+        self.findings = sorted(set(findings))
+        super().__init__("\n".join(f.format() for f in self.findings))
+
+
+class UsageError(HfsmError):
+    """A bad command-line argument, not tied to a file position; exit 2."""
+
+
+def finding_at_start(path: Path | str, code: str, message: str) -> Finding:
+    return Finding(str(path), 1, 1, code, message)

@@ -1,0 +1,124 @@
+"""Finding and loading machine files by name along the search path (SPEC section 10)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from hfsm import located
+from hfsm.builtins import BUILTINS
+from hfsm.errors import Finding, UserError
+from hfsm.model import CallState, Machine
+from hfsm.names import did_you_mean
+from hfsm.registry import Registry
+from hfsm.yamlio import Document, read_mapping
+
+PROJECT_MACHINES = Path(__file__).resolve().parent.parent / "machines"
+SUFFIXES = (".yaml", ".yml")
+
+
+@dataclass(frozen=True)
+class MachineFile:
+    name: str
+    path: Path
+    doc: Document
+    model: Machine
+
+
+def shown(path: Path) -> Path:
+    """A path as users should read it: relative to the working folder when inside it."""
+    try:
+        return path.resolve().relative_to(Path.cwd())
+    except ValueError:
+        return path
+
+
+def load_machine_file(path: Path) -> MachineFile:
+    doc = read_mapping(shown(path), "a machine")
+    model = located.validate(Machine, doc)
+    return MachineFile(path.stem, path, doc, model)
+
+
+class Library:
+    """The machines of one run: the top file's, and every machine they call, at any depth."""
+
+    def __init__(self, search: list[Path], registry: Registry) -> None:
+        self.search = [p for i, p in enumerate(search) if p not in search[:i]]
+        self.registry = registry
+        self.machines: dict[str, MachineFile] = {}
+        self.findings: list[Finding] = []
+
+    @classmethod
+    def for_file(cls, top: Path, libs: list[Path], registry: Registry) -> Library:
+        return cls([top.resolve().parent, *(p.resolve() for p in libs), PROJECT_MACHINES], registry)
+
+    def find(self, name: str) -> Path | None:
+        for folder in self.search:
+            for suffix in SUFFIXES:
+                candidate = folder / f"{name}{suffix}"
+                if candidate.is_file():
+                    return candidate
+        return None
+
+    def known_names(self) -> set[str]:
+        names = set(BUILTINS) | set(self.registry.names())
+        for folder in self.search:
+            if folder.is_dir():
+                names.update(p.stem for p in folder.iterdir() if p.suffix in SUFFIXES)
+        return names
+
+    def load(self, roots: list[Path]) -> list[MachineFile]:
+        """Load the roots and everything they call; raise UserError with every finding at once."""
+        top = [self._add(path) for path in roots]
+        pending = [m for m in top if m]
+        while pending:
+            machine = pending.pop()
+            for callee in self._callees(machine):
+                if callee not in self.machines:
+                    found = self._resolve(machine, callee)
+                    if found:
+                        pending.append(found)
+        if self.findings:
+            raise UserError(self.findings)
+        return [m for m in top if m]
+
+    def _add(self, path: Path) -> MachineFile | None:
+        try:
+            machine = load_machine_file(path)
+        except UserError as err:
+            self.findings.extend(err.findings)
+            return None
+        self._check_name(machine)
+        existing = self.machines.get(machine.name)
+        if existing and existing.path.resolve() != path.resolve():
+            self.findings.append(
+                machine.doc.finding(
+                    (), "E319", f"two machines are named '{machine.name}': also {existing.path}"
+                )
+            )
+        self.machines[machine.name] = machine
+        return machine
+
+    def _check_name(self, machine: MachineFile) -> None:
+        if machine.model.name is not None and machine.model.name != machine.name:
+            message = f"name '{machine.model.name}' must equal the file's stem '{machine.name}'"
+            self.findings.append(machine.doc.finding(("name",), "E203", message))
+        if machine.name in BUILTINS or machine.name in self.registry:
+            kind = "built-in behaviour" if machine.name in BUILTINS else "registered primitive"
+            message = f"machine '{machine.name}' takes the name of a {kind}"
+            self.findings.append(machine.doc.finding((), "E319", message))
+
+    def _callees(self, machine: MachineFile) -> list[str]:
+        names = {s.do for s in machine.model.states.values() if isinstance(s, CallState)}
+        return sorted(n for n in names if n not in BUILTINS and n not in self.registry)
+
+    def _resolve(self, caller: MachineFile, name: str) -> MachineFile | None:
+        path = self.find(name)
+        if path is not None:
+            return self._add(path)
+        hint = did_you_mean(name, self.known_names())
+        for state_name, state in caller.model.states.items():
+            if isinstance(state, CallState) and state.do == name:
+                where = ("states", state_name, "do")
+                self.findings.append(caller.doc.finding(where, "E300", f"unknown behaviour '{name}'{hint}"))
+        return None

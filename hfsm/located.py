@@ -1,0 +1,153 @@
+"""Validate a located YAML document against a pydantic model; every error at its line and column."""
+
+from __future__ import annotations
+
+import types
+from typing import Annotated, Any, TypeVar, Union, get_args, get_origin
+
+from pydantic import BaseModel, Tag, ValidationError
+from pydantic_core import ErrorDetails
+
+from hfsm.errors import Finding, UserError
+from hfsm.names import NAME_PATTERN, did_you_mean
+from hfsm.yamlio import Document, Path_
+
+M = TypeVar("M", bound=BaseModel)
+
+_TYPE_NAMES = {
+    "float_type": "a number",
+    "int_type": "a whole number",
+    "string_type": "a string",
+    "bool_type": "true or false",
+    "dict_type": "a mapping",
+    "list_type": "a list",
+    "model_type": "a mapping",
+    "model_attributes_type": "a mapping",
+}
+
+
+def validate(model: type[M], doc: Document) -> M:
+    try:
+        return model.model_validate(doc.data)
+    except ValidationError as exc:
+        raise UserError(findings(model, doc, exc.errors())) from None
+
+
+def findings(model: type[BaseModel], doc: Document, errors: list[ErrorDetails]) -> list[Finding]:
+    """One finding per located value: a union's alternatives fail together but read as one."""
+    seen: set[tuple[Path_, bool, object]] = set()
+    out: list[Finding] = []
+    for err in errors:
+        path, is_key = _data_path(doc.data, err["loc"])
+        is_key = is_key or err["type"] == "extra_forbidden"
+        named = err["loc"][-1] if err["type"] in ("missing", "extra_forbidden") else None
+        if (path, is_key, named) in seen:
+            continue
+        seen.add((path, is_key, named))
+        out.append(doc.finding(path, "E200", _message(model, path, err), key=is_key))
+    return out
+
+
+def _is_tag(part: int | str) -> bool:
+    return isinstance(part, str) and "-" in part
+
+
+def _data_path(data: Any, loc: tuple[int | str, ...]) -> tuple[Path_, bool]:
+    """Follow pydantic's loc through the data, skipping the union tags that name no data."""
+    path: list[str | int] = []
+    for part in loc:
+        if part == "[key]":
+            return tuple(path), True
+        if _is_tag(part):
+            continue
+        found, child = _child(data, part)
+        if found:
+            data = child
+            path.append(part)
+    return tuple(path), False
+
+
+def _child(data: Any, part: int | str) -> tuple[bool, Any]:
+    if isinstance(data, dict):
+        return part in data, data.get(part)
+    if isinstance(data, list) and isinstance(part, int) and 0 <= part < len(data):
+        return True, data[part]
+    return False, None
+
+
+def _message(model: type[BaseModel], path: Path_, err: ErrorDetails) -> str:
+    kind, value = err["type"], err.get("input")
+    last = path[-1] if path else None
+    where = f"'{last}'" if isinstance(last, str) else "this value"
+    if kind == "extra_forbidden":
+        allowed = _allowed_keys(model, err["loc"][:-1])
+        hint = did_you_mean(str(last), allowed)
+        return f"unknown key {where}" + (hint or f" (allowed: {', '.join(allowed)})")
+    if kind == "missing":
+        return f"missing required key '{err['loc'][-1]}'"
+    if last == "timer":
+        return f"'timer' must be a number of seconds > 0 or a '${{…}}' expression, not {_describe(value)}"
+    if kind == "string_pattern_mismatch":
+        return f"bad name {_describe(value)}: names match {NAME_PATTERN}"
+    if kind in _TYPE_NAMES:
+        return f"{where} must be {_TYPE_NAMES[kind]}, not {_describe(value)}"
+    if kind == "literal_error":
+        expected = [
+            str(v)
+            for v in (err.get("ctx") or {})
+            .get("expected", "")
+            .replace("'", "")
+            .replace(" or ", ", ")
+            .split(", ")
+        ]
+        return f"{where}: {err['msg'].lower()}, not {_describe(value)}" + did_you_mean(str(value), expected)
+    return f"{where}: {err['msg']}"
+
+
+def _describe(value: Any) -> str:
+    if value is None:
+        return "null"
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str):
+        return f"'{value}'"
+    if isinstance(value, dict):
+        return "a mapping"
+    if isinstance(value, list):
+        return "a list"
+    return repr(value)
+
+
+def _allowed_keys(model: type[BaseModel], loc: tuple[int | str, ...]) -> list[str]:
+    """The keys of the model that an error's location points into."""
+    current: Any = model
+    for part in loc:
+        current = _step(current, part)
+    current = _strip(current)
+    if isinstance(current, type) and issubclass(current, BaseModel):
+        return sorted(f.alias or n for n, f in current.model_fields.items())
+    return []
+
+
+def _strip(annotation: Any) -> Any:
+    while get_origin(annotation) is Annotated:
+        annotation = get_args(annotation)[0]
+    return annotation
+
+
+def _step(annotation: Any, part: int | str) -> Any:
+    annotation = _strip(annotation)
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        for name, field in annotation.model_fields.items():
+            if part in (name, field.alias):
+                return field.annotation
+        return annotation
+    origin = get_origin(annotation)
+    if origin in (dict, list):
+        return get_args(annotation)[-1]
+    if origin in (Union, types.UnionType):
+        for arg in get_args(annotation):
+            tags = [m for m in getattr(arg, "__metadata__", ()) if isinstance(m, Tag)]
+            if tags and tags[0].tag == part:
+                return arg
+    return annotation

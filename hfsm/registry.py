@@ -1,0 +1,43 @@
+"""The primitives a run may call, found through the `hfsm.primitives` entry-point group."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+from importlib.metadata import entry_points
+
+from hfsm.primitive import Primitive
+
+GROUP = "hfsm.primitives"
+
+
+class Registry:
+    """Primitives by name. A plug-in's entry point is a function `register(registry)`."""
+
+    def __init__(self, primitives: Iterable[Primitive] = ()) -> None:
+        self._by_name: dict[str, Primitive] = {}
+        self.add(*primitives)
+
+    def add(self, *primitives: Primitive) -> None:
+        for prim in primitives:
+            if prim.spec.name in self._by_name:
+                raise ValueError(f"primitive '{prim.spec.name}' is registered twice")
+            self._by_name[prim.spec.name] = prim
+
+    def get(self, name: str) -> Primitive | None:
+        return self._by_name.get(name)
+
+    def __contains__(self, name: object) -> bool:
+        return name in self._by_name
+
+    def __iter__(self) -> Iterator[Primitive]:
+        return iter(self._by_name.values())
+
+    def names(self) -> list[str]:
+        return sorted(self._by_name)
+
+    @classmethod
+    def discover(cls) -> Registry:
+        registry = cls()
+        for ep in sorted(entry_points(group=GROUP), key=lambda e: e.name):
+            ep.load()(registry)
+        return registry

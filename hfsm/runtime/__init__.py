@@ -1,0 +1,1 @@
+"""The interpreter: compiled machines, agents and their frames, activities, and the tick loop."""

@@ -1,0 +1,118 @@
+"""An agent's run-time state: its stack of machine frames, its mailbox, its statistics."""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+from hfsm.expr import Scope
+from hfsm.primitive import Message
+from hfsm.runtime.program import RMachine, RState
+
+
+class Event:
+    """What ends a state: a callee's outcome (with outputs), a timeout, a message, an error, a choice."""
+
+    __slots__ = ("error", "goto", "message", "name", "origin", "outputs", "traceback")
+
+    def __init__(
+        self,
+        name: str,
+        outputs: dict[str, Any] | None = None,
+        *,
+        error: str = "",
+        origin: str = "",
+        traceback: str = "",
+        goto: RState | str | None = None,
+        message: Message | None = None,
+    ) -> None:
+        self.name = name
+        self.outputs = outputs
+        self.error = error
+        self.origin = origin
+        self.traceback = traceback
+        self.goto = goto
+        self.message = message
+
+
+class Activity(Protocol):
+    """A running built-in or primitive: the leaf of an agent's stack."""
+
+    deadline: int | None  # the tick it must next be advanced in; None: only when a message comes
+
+    def advance(self, tick: int) -> Event | None: ...
+
+    def cancel(self) -> None: ...
+
+
+class Frame:
+    """One running machine: its memory, its current state and its timers."""
+
+    __slots__ = (
+        "activity",
+        "deadline",
+        "entered",
+        "machine",
+        "params",
+        "scope",
+        "state",
+        "state_deadline",
+        "vars",
+    )
+
+    def __init__(self, machine: RMachine, params: dict[str, Any], agent: str) -> None:
+        self.machine = machine
+        self.params = params
+        self.vars = machine.fresh_vars()
+        self.scope = Scope(params, self.vars, agent)
+        self.state: RState = machine.initial  # type: ignore[assignment]
+        self.deadline: int | None = None
+        self.state_deadline: int | None = None
+        self.entered = 0
+        self.activity: Activity | None = None
+
+
+@dataclass
+class BehaviourStats:
+    calls: int = 0
+    ticks: int = 0
+    events: dict[str, int] = field(default_factory=dict)
+
+
+@dataclass
+class AgentResult:
+    outcome: str | None
+    outputs: dict[str, Any]
+    time: float
+
+
+class Agent:
+    def __init__(self, name: str, top: str, robot: Any, seed: int) -> None:
+        self.name = name
+        self.top = top
+        self.robot = robot
+        self.rng = random.Random(f"{seed}:{name}")
+        self.stack: list[Frame] = []
+        self.mailbox: list[Message] = []
+        self.stats: dict[str, BehaviourStats] = {}
+        self.entries = 0
+        self.result: AgentResult | None = None
+
+    def path(self, level: int) -> list[str]:
+        return [self.top, *(f.state.name for f in self.stack[: level + 1])]
+
+    def take_message(self, names: Any) -> Message | None:
+        """Remove and return the earliest message whose name is in `names`."""
+        for i, message in enumerate(self.mailbox):
+            if message.name in names:
+                return self.mailbox.pop(i)
+        return None
+
+    def record(self, behaviour: str, event: str, ticks: int) -> None:
+        stats = self.stats.get(behaviour)
+        if stats is None:
+            stats = self.stats[behaviour] = BehaviourStats()
+        stats.calls += 1
+        stats.ticks += ticks
+        stats.events[event] = stats.events.get(event, 0) + 1

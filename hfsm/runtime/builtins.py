@@ -1,0 +1,97 @@
+"""The running code of the built-in behaviours (SPEC section 8)."""
+
+from __future__ import annotations
+
+import logging
+import math
+from typing import TYPE_CHECKING, Any
+
+from hfsm.names import RESERVED_MESSAGES, is_name
+from hfsm.runtime.agent import Agent, Event, Frame
+from hfsm.runtime.program import span_ticks
+
+if TYPE_CHECKING:
+    from hfsm.runtime.engine import Engine
+
+DONE = Event("done")
+log = logging.getLogger("hfsm.log")
+
+
+class Wait:
+    __slots__ = ("deadline",)
+
+    def __init__(self, deadline: int | None) -> None:
+        self.deadline = deadline
+
+    def advance(self, tick: int) -> Event | None:
+        return DONE if self.deadline is not None and tick >= self.deadline else None
+
+    def cancel(self) -> None:
+        pass
+
+
+class WaitFor:
+    __slots__ = ("agent", "deadline", "name")
+
+    def __init__(self, agent: Agent, name: str) -> None:
+        self.agent = agent
+        self.name = name
+        self.deadline: int | None = None
+
+    def advance(self, tick: int) -> Event | None:
+        message = self.agent.take_message((self.name,))
+        if message is None:
+            return None
+        return Event("received", {**message.data, "sender": message.sender})
+
+    def cancel(self) -> None:
+        pass
+
+
+def _error(text: str) -> Event:
+    return Event("error", error=text)
+
+
+def start_wait(engine: Engine, agent: Agent, frame: Frame, params: dict[str, Any]) -> Wait | Event:
+    seconds = params.get("seconds")
+    if seconds is None:
+        return Wait(None)
+    if not math.isfinite(seconds):
+        return _error(f"wait: seconds must be finite, not {seconds}")
+    if seconds <= 0:
+        return DONE
+    return Wait(engine.tick + span_ticks(seconds, engine.dt))
+
+
+def start_wait_for(engine: Engine, agent: Agent, frame: Frame, params: dict[str, Any]) -> WaitFor | Event:
+    activity = WaitFor(agent, params["message"])
+    return activity.advance(engine.tick) or activity
+
+
+def start_send(engine: Engine, agent: Agent, frame: Frame, params: dict[str, Any]) -> Event:
+    name, to, data = params["message"], params.get("to", "others"), params.get("data", {})
+    if not is_name(name) or name in RESERVED_MESSAGES:
+        return _error(f"send: bad message name {name!r}")
+    problem = engine.send(agent, name, to, data)
+    return _error(problem) if problem else Event("sent")
+
+
+def start_set(engine: Engine, agent: Agent, frame: Frame, params: dict[str, Any]) -> Event:
+    frame.vars.update(params)
+    return DONE
+
+
+def start_log(engine: Engine, agent: Agent, frame: Frame, params: dict[str, Any]) -> Event:
+    log.info(
+        "%s %s t=%s: %s", agent.name, "/".join(agent.path(len(agent.stack) - 1)), engine.time, params["text"]
+    )
+    return DONE
+
+
+STARTERS = {
+    "wait": start_wait,
+    "wait_for": start_wait_for,
+    "send": start_send,
+    "set": start_set,
+    "log": start_log,
+}

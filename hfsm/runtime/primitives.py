@@ -1,0 +1,120 @@
+"""Primitives run in greenlets: blocking calls for their authors, cancellable at any tick."""
+
+from __future__ import annotations
+
+import logging
+import math
+import sys
+import traceback
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
+
+from greenlet import GreenletExit, greenlet
+
+from hfsm.primitive import Cancelled, Message, Outcome, Primitive
+from hfsm.runtime.agent import Agent, Event
+from hfsm.runtime.program import span_ticks
+
+if TYPE_CHECKING:
+    from hfsm.runtime.engine import Engine
+
+
+class RunContext:
+    """The `hfsm.primitive.Context` a primitive gets: clock, agent, mailbox, world handle, logger."""
+
+    def __init__(self, engine: Engine, agent: Agent, behaviour: str) -> None:
+        self._engine = engine
+        self._agent = agent
+        self.agent = agent.name
+        self.robot = agent.robot
+        self.dt = engine.dt
+        self.rng = agent.rng
+        self.log = logging.getLogger(f"hfsm.{agent.name}.{behaviour}")
+        self.cancelled = False
+
+    @property
+    def tick(self) -> int:
+        return self._engine.tick
+
+    @property
+    def time(self) -> float:
+        return self._engine.time
+
+    def wait(self, seconds: float | None = None) -> None:
+        if self.cancelled:
+            raise Cancelled
+        if seconds is not None and seconds <= 0:
+            return
+        if seconds is None:
+            resume = self._engine.tick + 1
+        elif math.isfinite(seconds):
+            resume = self._engine.tick + span_ticks(seconds, self.dt)
+        else:
+            resume = sys.maxsize
+        hub = greenlet.getcurrent().parent
+        if hub is None:
+            raise RuntimeError("ctx.wait() called outside a running primitive")
+        hub.switch(resume)
+        if self.cancelled:
+            raise Cancelled
+
+    def wait_until(self, ready: Callable[[], bool], timeout: float = math.inf) -> bool:
+        end = self._engine.tick + span_ticks(timeout, self.dt) if math.isfinite(timeout) else None
+        while not ready():
+            if end is not None and self._engine.tick >= end:
+                return False
+            self.wait()
+        return True
+
+    def receive(self, name: str) -> Message | None:
+        return self._agent.take_message((name,))
+
+    def send(self, message: str, to: str = "others", **data: Any) -> None:
+        self._engine.send(self._agent, message, to, data)
+
+
+class PrimitiveActivity:
+    def __init__(self, prim: Primitive, ctx: RunContext, params: dict[str, Any], origin: str) -> None:
+        self.prim = prim
+        self.ctx = ctx
+        self.origin = origin
+        self.deadline: int | None = None
+        self._g = greenlet(lambda: prim.fn(ctx, **params))
+
+    def advance(self, tick: int) -> Event | None:
+        try:
+            value = self._g.switch()
+        except Exception as exc:
+            text = f"{type(exc).__name__}: {exc}"
+            return Event("error", error=text, origin=self.origin, traceback=traceback.format_exc())
+        if not self._g.dead:
+            self.deadline = value
+            return None
+        return self._result(value)
+
+    def _result(self, value: Any) -> Event:
+        spec = self.prim.spec
+        name, outputs = (value.name, dict(value.outputs)) if isinstance(value, Outcome) else (value, {})
+        if not isinstance(name, str) or name not in spec.outcomes:
+            error = f"'{spec.name}' returned {value!r}, not one of its outcomes ({', '.join(spec.outcomes)})"
+            return Event("error", error=error, origin=self.origin)
+        undeclared = set(outputs) - set(spec.outputs or ())
+        if spec.outputs is not None and undeclared:
+            error = f"'{spec.name}' returned undeclared outputs {sorted(undeclared)}"
+            return Event("error", error=error, origin=self.origin)
+        return Event(name, outputs)
+
+    def cancel(self) -> None:
+        if self._g.dead:
+            return
+        self.ctx.cancelled = True
+        if not self._g:  # never started
+            return
+        try:
+            self._g.throw(Cancelled())
+        except Cancelled:
+            pass
+        except Exception:
+            self.ctx.log.exception("primitive failed while cleaning up after a cancel")
+        if not self._g.dead:
+            self._g.throw(GreenletExit())

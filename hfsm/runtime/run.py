@@ -1,0 +1,105 @@
+"""The run loop: all agents in lockstep on one clock, until each ends, an error, or the time limit."""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+from hfsm.runtime.agent import Agent, AgentResult, BehaviourStats
+from hfsm.runtime.engine import Engine, FatalError
+from hfsm.runtime.program import Program, span_ticks
+from hfsm.trace import TraceSink
+from hfsm.world import World
+
+
+@dataclass
+class RunResult:
+    agents: dict[str, AgentResult]
+    time: float
+    error: str | None = None
+    traceback: str = ""
+    stats: dict[str, dict[str, BehaviourStats]] = field(default_factory=dict)
+
+    @property
+    def exit_code(self) -> int:
+        return 1 if self.error else 0
+
+
+@dataclass
+class RunOptions:
+    top: str
+    agents: Sequence[str]
+    params: dict[str, Any]
+    seed: int = 0
+    max_time: float = 3600.0
+
+
+def run(program: Program, world: World, options: RunOptions, trace: TraceSink | None = None) -> RunResult:
+    agents = [Agent(n, options.top, None, options.seed) for n in options.agents]
+    world.start([a.name for a in agents], program.dt)
+    for agent in agents:
+        agent.robot = world.handle(agent.name)
+    engine = Engine(agents, world, program.dt, trace)
+    error, tb = _loop(engine, program, options, world)
+    if error:
+        _stop_all(engine, agents)
+    results = {a.name: a.result or AgentResult(None, {}, engine.time) for a in agents}
+    return RunResult(results, engine.time, error, tb, {a.name: a.stats for a in agents})
+
+
+def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -> tuple[str | None, str]:
+    agents = engine.agents
+    last = span_ticks(options.max_time, program.dt)
+    top = program.machines[options.top]
+    try:
+        for agent in agents:
+            agent.entries = 0
+            engine.start(agent, top, options.params)
+        while any(a.result is None for a in agents):
+            following = _next_tick(engine) if world.static else engine.tick + 1
+            if following is None:
+                return "blocked forever: " + _where(agents), ""
+            if following > last:
+                engine.tick = max(engine.tick, last)
+                return f"stopped at --max-time {options.max_time:g} s: " + _where(agents), ""
+            if not world.static:
+                world.advance(engine.tick)
+            engine.tick = following
+            engine.deliver(world.collect(following))
+            for agent in agents:
+                if agent.result is None:
+                    agent.entries = 0
+                    engine.step(agent)
+    except FatalError as exc:
+        return exc.args[0], exc.traceback
+    return None, ""
+
+
+def _next_tick(engine: Engine) -> int | None:
+    """In a static world, the next tick in which anything can happen; None when nothing can."""
+    candidates = [engine.world.next_delivery()]
+    for agent in engine.agents:
+        if agent.result is not None:
+            continue
+        for frame in agent.stack:
+            candidates += (frame.deadline, frame.state_deadline)
+        activity = agent.stack[-1].activity if agent.stack else None
+        if activity is not None and activity.deadline is not None and activity.deadline < sys.maxsize:
+            candidates.append(activity.deadline)
+    due = [c for c in candidates if c is not None and c > engine.tick]
+    return min(due) if due else None
+
+
+def _where(agents: list[Agent]) -> str:
+    return "; ".join(
+        f"{a.name} in {'/'.join(a.path(len(a.stack) - 1))}" for a in agents if a.result is None and a.stack
+    )
+
+
+def _stop_all(engine: Engine, agents: list[Agent]) -> None:
+    """Cancel what still runs, so that every `enter` in the trace has its `exit`."""
+    for agent in agents:
+        if agent.result is None:
+            engine.stop(agent)

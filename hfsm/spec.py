@@ -1,0 +1,56 @@
+"""What a caller needs to know of any behaviour: params, outcomes, failures, outputs."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+Kind = Literal["builtin", "primitive", "machine"]
+TYPE_NAMES = ("int", "float", "bool", "str", "list", "dict", "any")
+
+
+@dataclass(frozen=True)
+class ParamSpec:
+    name: str
+    type: str  # one of TYPE_NAMES
+    required: bool = True
+    default: Any = None
+    doc: str = ""
+
+
+@dataclass(frozen=True)
+class BehaviourSpec:
+    name: str
+    kind: Kind
+    params: dict[str, ParamSpec]
+    outcomes: tuple[str, ...]
+    failures: frozenset[str] = frozenset()
+    outputs: frozenset[str] | None = frozenset()  # None: open (any name may be saved)
+    doc: str = ""
+    world: str | None = None  # the world a primitive needs, e.g. "sim"
+    open_params: bool = False  # `set` takes the caller's vars as params
+    extra: dict[str, Any] = field(default_factory=dict, compare=False)
+
+
+def type_ok(value: Any, type_name: str) -> bool:
+    """Whether a value fits a declared param type; an int is accepted for a float."""
+    if type_name == "any":
+        return True
+    if isinstance(value, bool):
+        return type_name == "bool"
+    if type_name == "float":
+        return isinstance(value, int | float)
+    expected = {"int": int, "bool": bool, "str": str, "list": list, "dict": dict}[type_name]
+    return isinstance(value, expected)
+
+
+def coerce(value: Any, type_name: str) -> Any:
+    """A value that passed `type_ok`, as its declared type (ints become floats for float params)."""
+    if type_name == "float" and isinstance(value, int) and not isinstance(value, bool):
+        return float(value)
+    return value
+
+
+def is_finite_number(value: Any) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value)

@@ -1,0 +1,98 @@
+"""Values of `with` and `outputs`: literals in which `${…}` may stand at any depth, never in keys."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+from hfsm.expr import ExprSyntaxError, Fn, Names, Scope, compile_expr, to_text
+
+
+@dataclass(frozen=True)
+class Value:
+    """A compiled value: `constant` when it holds no expression (then `fn` returns `literal`)."""
+
+    fn: Fn
+    constant: bool
+    literal: Any = None
+    is_expr: bool = False  # exactly "${…}": its type is known only when it runs
+
+
+def split(text: str) -> list[str | tuple[str]]:
+    """Split text into literal parts and (expression,) parts; '${' without its '}' is an error."""
+    parts: list[str | tuple[str]] = []
+    i = 0
+    while (start := text.find("${", i)) >= 0:
+        end = _closing(text, start + 2)
+        if start > i:
+            parts.append(text[i:start])
+        parts.append((text[start + 2 : end],))
+        i = end + 1
+    if i < len(text):
+        parts.append(text[i:])
+    return parts
+
+
+def _closing(text: str, i: int) -> int:
+    depth, quote = 0, ""
+    while i < len(text):
+        ch = text[i]
+        if quote:
+            quote = "" if ch == quote and text[i - 1] != "\\" else quote
+        elif ch in "'\"":
+            quote = ch
+        elif ch == "{":
+            depth += 1
+        elif ch == "}":
+            if depth == 0:
+                return i
+            depth -= 1
+        i += 1
+    raise ExprSyntaxError(f"'${{' without its closing '}}' in '{text}'")
+
+
+def compile_text(text: str, names: Names) -> Value:
+    parts = split(text)
+    if not any(isinstance(p, tuple) for p in parts):
+        return Value(lambda s: text, True, text)
+    if len(parts) == 1 and isinstance(parts[0], tuple):
+        return Value(compile_expr(parts[0][0], names), False, is_expr=True)
+    pieces: list[Callable[[Scope], str]] = []
+    for part in parts:
+        if isinstance(part, tuple):
+            pieces.append(_as_text(compile_expr(part[0], names)))
+        else:
+            pieces.append(_literal(part))
+    return Value(lambda s: "".join(p(s) for p in pieces), False)
+
+
+def _as_text(fn: Fn) -> Callable[[Scope], str]:
+    return lambda s: to_text(fn(s))
+
+
+def _literal(text: str) -> Callable[[Scope], str]:
+    return lambda s: text
+
+
+def compile_value(value: Any, names: Names, errors: list[str] | None = None) -> Value:
+    """Compile a literal tree; expression errors are appended to `errors` (or raised)."""
+    if isinstance(value, str):
+        try:
+            return compile_text(value, names)
+        except ExprSyntaxError as exc:
+            if errors is None:
+                raise
+            errors.append(str(exc))
+            return Value(lambda s: value, True, value)
+    if isinstance(value, dict):
+        items = {k: compile_value(v, names, errors) for k, v in value.items()}
+        if all(v.constant for v in items.values()):
+            return Value(lambda s: value, True, value)
+        return Value(lambda s: {k: v.fn(s) for k, v in items.items()}, False)
+    if isinstance(value, list):
+        elems = [compile_value(v, names, errors) for v in value]
+        if all(v.constant for v in elems):
+            return Value(lambda s: value, True, value)
+        return Value(lambda s: [v.fn(s) for v in elems], False)
+    return Value(lambda s: value, True, value)

@@ -1,0 +1,99 @@
+"""The world seam: what the interpreter needs of the world the agents act in.
+
+`--world none` is `NullWorld`: a perfect radio and nothing else. The simulator plugs in through
+the `hfsm.worlds` entry-point group (a `WorldFactory`), so hfsm never imports it.
+"""
+
+from __future__ import annotations
+
+import argparse
+from collections.abc import Sequence
+from typing import Any, Protocol
+
+from hfsm.primitive import Message
+
+WORLDS_GROUP = "hfsm.worlds"
+
+
+class World(Protocol):
+    """Advances time one tick for all agents and carries their messages."""
+
+    name: str
+    static: bool  # True: nothing changes between events, so idle ticks may be skipped
+
+    def agent_names(self) -> Sequence[str] | None:
+        """The agents this world has (e.g. a scenario's robots), or None to let the run choose."""
+
+    def start(self, agents: Sequence[str], dt: float) -> None: ...
+
+    def handle(self, agent: str) -> Any:
+        """What primitives of that agent get as `ctx.robot`."""
+
+    def post(self, message: Message) -> None: ...
+
+    def collect(self, tick: int) -> list[Message]:
+        """Messages that enter the mailboxes at the start of `tick`, in delivery order."""
+
+    def next_delivery(self) -> int | None: ...
+
+    def advance(self, tick: int) -> None:
+        """Move the world from tick `tick` to tick `tick + 1`."""
+
+    def report(self) -> dict[str, Any]:
+        """Extra top-level keys for `--json`, e.g. {"score": {...}}."""
+
+    def close(self) -> list[str]:
+        """Release resources; return the paths of files written (videos, pictures)."""
+
+
+class WorldFactory(Protocol):
+    name: str
+
+    def add_arguments(self, group: argparse._ArgumentGroup) -> None: ...
+
+    def create(self, args: argparse.Namespace, seed: int) -> World: ...
+
+
+class PerfectRadio:
+    """Every message arrives at the start of the tick after it was sent, in sending order."""
+
+    def __init__(self) -> None:
+        self._in_flight: list[Message] = []
+
+    def post(self, message: Message) -> None:
+        self._in_flight.append(message)
+
+    def collect(self, tick: int) -> list[Message]:
+        if not self._in_flight:
+            return []
+        due = [m for m in self._in_flight if m.sent_tick < tick]
+        self._in_flight = [m for m in self._in_flight if m.sent_tick >= tick]
+        return due
+
+    def next_delivery(self) -> int | None:
+        return min((m.sent_tick + 1 for m in self._in_flight), default=None)
+
+
+class NullWorld(PerfectRadio):
+    """`--world none`: built-in behaviours only, no simulator."""
+
+    name = "none"
+    static = True
+
+    def agent_names(self) -> Sequence[str] | None:
+        return None
+
+    def start(self, agents: Sequence[str], dt: float) -> None:
+        pass
+
+    def handle(self, agent: str) -> Any:
+        return None
+
+    def advance(self, tick: int) -> None:
+        pass
+
+    def report(self) -> dict[str, Any]:
+        return {}
+
+    def close(self) -> list[str]:
+        return []

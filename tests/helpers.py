@@ -1,0 +1,46 @@
+"""Test helpers: write machine files, run them in process."""
+
+from __future__ import annotations
+
+import textwrap
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+from hfsm.load import load
+from hfsm.registry import Registry
+from hfsm.runtime.program import Program
+from hfsm.runtime.run import RunOptions, RunResult, run
+from hfsm.trace import ListTrace
+from hfsm.world import NullWorld, World
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def write(folder: Path, name: str, text: str) -> Path:
+    path = folder / f"{name}.yaml"
+    path.write_text(textwrap.dedent(text).lstrip(), encoding="utf-8")
+    return path
+
+
+def execute(
+    path: Path,
+    *,
+    agents: Sequence[str] = ("robot",),
+    params: dict[str, Any] | None = None,
+    registry: Registry | None = None,
+    world: World | None = None,
+    dt: float = 0.05,
+    max_time: float = 3600.0,
+    seed: int = 0,
+) -> tuple[RunResult, list[dict[str, Any]]]:
+    registry = registry or Registry()
+    loaded = load([path], registry=registry)
+    top = loaded.roots[0]
+    full = {k: p.default for k, p in top.model.params.items() if not p.required}
+    full.update(params or {})
+    program = Program(loaded.machines, registry, dt)
+    trace = ListTrace()
+    options = RunOptions(top.name, list(agents), full, seed, max_time)
+    result = run(program, world or NullWorld(), options, trace)
+    return result, trace.records
