@@ -1,18 +1,91 @@
-"""The `hfsm.worlds` entry point for `--world sim` (the adapter lands with sim/)."""
+"""The `hfsm.worlds` entry point for `--world sim`.
+
+Light on purpose: hfsm-run loads it for every run to learn the flags; the simulator (and
+pybullet, which prints a banner on stdout when imported) is imported only when a sim world is made.
+"""
 
 from __future__ import annotations
 
 import argparse
+import contextlib
+import os
+import sys
+from collections.abc import Iterator
+from pathlib import Path
+from typing import TYPE_CHECKING
 
 from hfsm.errors import UsageError
-from hfsm.world import World
+
+if TYPE_CHECKING:
+    from behaviours.simworld import SimWorld
+
+DEFAULT_SCENARIO = "opposite_long_side"
+
+
+@contextlib.contextmanager
+def stdout_to_stderr() -> Iterator[None]:
+    """Send what C code prints on file descriptor 1 to stderr, so stdout stays clean JSON."""
+    sys.stdout.flush()
+    saved = os.dup(1)
+    try:
+        os.dup2(2, 1)
+        yield
+    finally:
+        os.dup2(saved, 1)
+        os.close(saved)
 
 
 class SimWorldFactory:
     name = "sim"
 
     def add_arguments(self, group: argparse._ArgumentGroup) -> None:
-        pass
+        group.add_argument(
+            "--scenario",
+            default=DEFAULT_SCENARIO,
+            metavar="NAME|FILE",
+            help=f"a shipped scenario or a scenario file (default {DEFAULT_SCENARIO})",
+        )
+        group.add_argument("--video", type=Path, metavar="FILE", help="top-down video (.mp4 or .gif)")
+        group.add_argument("--image-size", default="160x120", metavar="WxH", help="camera images")
+        group.add_argument("--radio-latency", type=float, default=0.1, metavar="S")
+        group.add_argument("--radio-loss", type=float, default=0.0, metavar="P")
+        group.add_argument(
+            "--progress",
+            type=float,
+            default=0.0,
+            metavar="S",
+            help="print the simulated time every S seconds",
+        )
 
-    def create(self, args: argparse.Namespace, seed: int) -> World:
-        raise UsageError("--world sim is not available yet")
+    def create(self, args: argparse.Namespace, seed: int) -> SimWorld:
+        with stdout_to_stderr():
+            from behaviours.simworld import SimWorld, load_scenario
+            from sim import World
+            from sim.recorder import Recorder
+
+        scenario, _ = load_scenario(args.scenario)
+        size = _image_size(args.image_size)
+        recorder = None
+        outputs: list[Path] = []
+        if args.video:
+            args.video.parent.mkdir(parents=True, exist_ok=True)
+            recorder = Recorder(args.video)
+            outputs = [args.video, args.video.with_suffix(".png")]
+        if not 0 <= args.radio_loss <= 1 or args.radio_latency < 0:
+            raise UsageError("--radio-loss takes 0..1 and --radio-latency a number >= 0")
+        world = World(
+            scenario,
+            seed,
+            image_size=size,
+            radio_latency=args.radio_latency,
+            radio_loss=args.radio_loss,
+            recorder=recorder,
+        )
+        return SimWorld(world, progress_every=args.progress, outputs=outputs)
+
+
+def _image_size(text: str) -> tuple[int, int]:
+    width, sep, height = text.partition("x")
+    if not (sep and width.isdigit() and height.isdigit() and int(width) >= 16 and int(height) >= 12):
+        raise UsageError(f"--image-size {text!r}: write WIDTHxHEIGHT, e.g. 160x120")
+    return int(width), int(height)

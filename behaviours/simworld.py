@@ -1,0 +1,83 @@
+"""The pybullet world (sim) seen through the engine's world seam (hfsm.world).
+
+Scenario files are read like machine files: every error at its line and column. Messages go
+through the sim's radio (latency, loss) into the engine's mailboxes.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+from hfsm import located
+from hfsm.errors import UsageError
+from hfsm.primitive import Message
+from hfsm.yamlio import read_mapping
+from sim import Robot, Scenario, World, resolve
+
+SCORE_KEYS = ("success", "table_wall_distance", "dropped", "robot_collisions", "time")
+
+
+def load_scenario(name_or_path: str) -> tuple[Scenario, str]:
+    """A scenario by shipped name or file path, checked with positions; and its display name."""
+    try:
+        path = resolve(name_or_path)
+    except FileNotFoundError as exc:
+        raise UsageError(f"--scenario: {exc}") from None
+    return located.validate(Scenario, read_mapping(path, "a scenario")), path.stem
+
+
+class SimWorld:
+    """Implements hfsm.world.World over a sim.World."""
+
+    name = "sim"
+    static = False
+
+    def __init__(self, world: World, *, progress_every: float = 0.0, outputs: Sequence[Path] = ()) -> None:
+        self.world = world
+        self.dt = 0.05
+        self.progress_every = progress_every
+        self._outputs = list(outputs)
+        self._next_progress = progress_every
+
+    def agent_names(self) -> list[str]:
+        return list(self.world.robots)
+
+    def start(self, agents: Sequence[str], dt: float) -> None:
+        self.dt = dt
+
+    def handle(self, agent: str) -> Robot:
+        return self.world.robots[agent]
+
+    def post(self, message: Message) -> None:
+        self.world.radio.send(message.sender, message.to, message, message.sent_tick * self.dt)
+
+    def collect(self, tick: int) -> list[Message]:
+        return [payload for _, _, payload in self.world.radio.deliver(tick * self.dt)]
+
+    def next_delivery(self) -> int | None:
+        return None
+
+    def advance(self, tick: int) -> None:
+        self.world.advance(self.dt)
+        if self.progress_every and self.world.time + 1e-9 >= self._next_progress:
+            self._next_progress += self.progress_every
+            self._progress()
+
+    def _progress(self) -> None:
+        minutes, seconds = divmod(self.world.time, 60)
+        line = f"simulated {int(minutes):02d}:{seconds:04.1f}"
+        end = "\r" if sys.stderr.isatty() else "\n"
+        print(line, end=end, file=sys.stderr, flush=True)
+
+    def report(self) -> dict[str, Any]:
+        score = self.world.score()
+        return {"score": {k: score[k] for k in SCORE_KEYS}}
+
+    def close(self) -> list[str]:
+        if self.progress_every and sys.stderr.isatty():
+            print(file=sys.stderr)
+        self.world.close()
+        return [str(p) for p in self._outputs if p.exists()]
