@@ -7,3 +7,6 @@ from hfsm.registry import Registry
 
 def register(registry: Registry) -> None:
     """Add this package's primitives to a registry."""
+    from behaviours import approach, carry
+
+    registry.add(*approach.PRIMITIVES, *carry.PRIMITIVES)
