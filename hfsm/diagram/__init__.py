@@ -1,0 +1,1 @@
+"""hfsm-graph: machines drawn as diagrams (model, extraction, trace overlay, DOT, rendering)."""
