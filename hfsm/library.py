@@ -68,7 +68,7 @@ class Library:
         return names
 
     def load(self, roots: list[Path]) -> list[MachineFile]:
-        """Load the roots and everything they call; raise UserError with every finding at once."""
+        """Load the roots and everything they call; problems go to `findings`."""
         top = [self._add(path) for path in roots]
         pending = [m for m in top if m]
         while pending:
@@ -78,8 +78,6 @@ class Library:
                     found = self._resolve(machine, callee)
                     if found:
                         pending.append(found)
-        if self.findings:
-            raise UserError(self.findings)
         return [m for m in top if m]
 
     def _add(self, path: Path) -> MachineFile | None:

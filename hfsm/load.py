@@ -36,5 +36,5 @@ def load(
         if extra.resolve().parent not in library.search:
             library.search.insert(1, extra.resolve().parent)
     roots = library.load(paths)
-    warnings = enforce(run_checks(library.machines, registry), strict=strict)
+    warnings = enforce(library.findings + run_checks(library.machines, registry), strict=strict)
     return Loaded(library, roots, warnings)

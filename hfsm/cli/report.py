@@ -12,9 +12,9 @@ from hfsm.runtime.agent import BehaviourStats
 from hfsm.runtime.run import RunResult
 
 
-def findings(items: Iterable[Finding], out: TextIO = sys.stderr) -> None:
+def findings(items: Iterable[Finding], out: TextIO | None = None) -> None:
     for f in items:
-        print(f.format(), file=out)
+        print(f.format(), file=out or sys.stderr)
 
 
 def json_result(result: RunResult, extra: dict[str, Any]) -> str:
@@ -29,14 +29,15 @@ def json_result(result: RunResult, extra: dict[str, Any]) -> str:
     return json.dumps(body, default=str, allow_nan=False)
 
 
-def text_result(result: RunResult, out: TextIO = sys.stdout) -> None:
+def text_result(result: RunResult, out: TextIO | None = None) -> None:
+    out = out or sys.stdout
     for name, r in result.agents.items():
         ended = f"ended in '{r.outcome}'" if r.outcome is not None else "did not end"
         outputs = f" with {json.dumps(r.outputs, default=str)}" if r.outputs else ""
         print(f"{name}: {ended} at t={r.time:g} s{outputs}", file=out)
 
 
-def summary(stats: dict[str, dict[str, BehaviourStats]], dt: float, out: TextIO = sys.stderr) -> None:
+def summary(stats: dict[str, dict[str, BehaviourStats]], dt: float, out: TextIO | None = None) -> None:
     """Per behaviour: calls, how they ended, total and mean time (the shape of the paper's Figure 10)."""
     rows = []
     for agent, table in stats.items():
@@ -46,6 +47,7 @@ def summary(stats: dict[str, dict[str, BehaviourStats]], dt: float, out: TextIO 
             rows.append((agent, behaviour, str(s.calls), f"{total:.2f}", f"{total / s.calls:.2f}", ends))
     if not rows:
         return
+    out = out or sys.stderr
     head = ("agent", "behaviour", "calls", "total s", "mean s", "ended with")
     widths = [max(len(r[i]) for r in [head, *rows]) for i in range(len(head))]
     for row in [head, *rows]:

@@ -103,9 +103,7 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
 def _world(
     args: argparse.Namespace, loaded: Loaded, registry: Registry, factories: dict[str, WorldFactory]
 ) -> World:
-    needs = sorted(
-        {p.spec.world for p in registry if p.spec.world and _used(loaded, p.spec.name)}
-    )
+    needs = sorted({p.spec.world for p in registry if p.spec.world and _used(loaded, p.spec.name)})
     name = args.world or (needs[0] if needs else "none")
     wrong = [w for w in needs if w != name]
     if wrong:
@@ -169,3 +167,7 @@ def entry() -> None:
 
 
 __all__ = ["HfsmError", "entry", "main", "traceback"]
+
+
+if __name__ == "__main__":
+    entry()

@@ -97,6 +97,7 @@ class Agent:
         self.mailbox: list[Message] = []
         self.stats: dict[str, BehaviourStats] = {}
         self.entries = 0
+        self.started = False
         self.result: AgentResult | None = None
 
     def path(self, level: int) -> list[str]:

@@ -51,6 +51,7 @@ class Engine:
     # --- one agent, one tick -------------------------------------------------------------------
 
     def start(self, agent: Agent, top: RMachine, params: dict[str, Any]) -> None:
+        agent.started = True
         self.emit(agent, [agent.top], "enter")
         self._settle(agent, -1, self._start_machine(agent, top, params))
 
@@ -145,16 +146,16 @@ class Engine:
             agent.record(frame.state.do, event, self.tick - frame.entered)
 
     def _enter(self, agent: Agent, level: int, state: RState) -> Event | None:
-        agent.entries += 1
-        if agent.entries > MAX_ENTRIES:
-            path = "/".join(agent.path(level))
-            raise FatalError(agent.name, f"{path}: more than {MAX_ENTRIES} state entries in one tick")
         frame = agent.stack[level]
         frame.state = state
         frame.entered = self.tick
         frame.state_deadline = None
         if self.trace is not None:
-            self.emit(agent, agent.path(level), "enter", do=state.do or None)
+            self.emit(agent, agent.path(level), "enter", **({"do": state.do} if state.do else {}))
+        agent.entries += 1
+        if agent.entries > MAX_ENTRIES:
+            path = "/".join(agent.path(level))
+            raise FatalError(agent.name, f"{path}: more than {MAX_ENTRIES} state entries in one tick")
         if state.is_choice:
             return self._choose(frame, state)
         if state.timer is not None:
@@ -281,6 +282,8 @@ class Engine:
 
     def stop(self, agent: Agent) -> None:
         """End an agent that has not ended: cancel what runs, close its trace."""
+        if not agent.started:
+            return
         self._cancel_below(agent, -1, "stopped")
         self.emit(agent, [agent.top], "exit", outcome=None)
 

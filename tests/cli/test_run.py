@@ -1,0 +1,134 @@
+"""`hfsm-run` as users meet it: flags, output, exit codes (SPEC section 10)."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+from hfsm.cli.run import main
+
+Machine = Callable[[str, str], Path]
+ROOT = Path(__file__).resolve().parents[2]
+ONE = """
+    params:
+      n: {type: int}
+      gain: {type: float, default: 1.5}
+    outcomes: [done]
+    outputs: {n: "${params.n}", gain: "${params.gain}"}
+    states:
+      a: {do: wait, with: {seconds: 0.2}, on: {done: done}}
+"""
+
+
+def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_json_for_one_agent(machine: Machine, capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = run(capsys, machine("m", ONE), "--json", "--param", "n=3", "--param", "gain=2")
+    assert code == 0
+    assert json.loads(out) == {"outcome": "done", "outputs": {"n": 3, "gain": 2.0}, "time": 0.2}
+
+
+def test_json_for_several_agents_and_errors(machine: Machine, capsys: pytest.CaptureFixture[str]) -> None:
+    path = machine(
+        "m",
+        """
+        outcomes: [done]
+        states:
+          a:
+            choose:
+              - {if: "agent.id == 'x'", then: bad}
+              - {else: nap}
+          bad: {do: wait, with: {seconds: "${1 / 0}"}, on: {done: done}}
+          nap: {do: wait, with: {seconds: 5}, on: {done: done}}
+    """,
+    )
+    code, out, err = run(capsys, path, "--json", "--agents", "x,y")
+    body = json.loads(out)
+    assert code == 1
+    assert body["error"] == "m/bad: division by zero in '1 / 0'"
+    assert body["agents"]["y"] == {"outcome": None, "outputs": {}, "time": 0.0}
+    assert "Traceback" not in err
+
+
+def test_required_param_missing_is_exit_2(machine: Machine, capsys: pytest.CaptureFixture[str]) -> None:
+    code, _, err = run(capsys, machine("m", ONE))
+    assert code == 2 and "needs --param n=VALUE" in err
+
+
+@pytest.mark.parametrize(
+    ("arg", "text"), [("n=x", "takes int"), ("m=1", "has no param 'm'"), ("n", "NAME=VALUE")]
+)
+def test_bad_params(machine: Machine, capsys: pytest.CaptureFixture[str], arg: str, text: str) -> None:
+    code, _, err = run(capsys, machine("m", ONE), "--param", arg)
+    assert code == 2 and text in err
+
+
+def test_check_and_strict(machine: Machine, capsys: pytest.CaptureFixture[str]) -> None:
+    path = machine(
+        "m", "outcomes: [done, never]\nstates:\n  a: {do: wait, with: {seconds: 1}, on: {done: done}}\n"
+    )
+    assert run(capsys, path, "--check")[0] == 0
+    code, _, err = run(capsys, path, "--check", "--strict")
+    assert code == 2 and "error[W401]: outcome 'never' is never reached" in err
+
+
+def test_bad_file_lists_every_error_with_positions(
+    machine: Machine, capsys: pytest.CaptureFixture[str]
+) -> None:
+    path = machine(
+        "m", "outcomes: [done]\nstates:\n  a: {do: wiat, on: {done: b}}\n  b: {do: wait, on: {dne: done}}\n"
+    )
+    code, out, err = run(capsys, path, "--json")
+    assert code == 2 and out == ""
+    lines = err.strip().splitlines()
+    assert lines[0].endswith("m.yaml:3:11: error[E300]: unknown behaviour 'wiat'; did you mean 'wait'?")
+    assert len(lines) == 3
+
+
+def test_max_time_and_trace(machine: Machine, capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    path = machine("m", "outcomes: [done]\nstates:\n  a: {do: wait, with: {seconds: 9}, on: {done: done}}\n")
+    trace = tmp_path / "t.jsonl"
+    code, out, _ = run(capsys, path, "--max-time", "1", "--json", "--trace", trace)
+    assert code == 1 and json.loads(out)["time"] == 1.0
+    records = [json.loads(line) for line in trace.read_text().splitlines()]
+    assert [r["kind"] for r in records] == ["enter", "enter", "exit", "exit"]
+
+
+def test_schema(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = run(capsys, "--schema")
+    schema = json.loads(out)
+    assert code == 0 and schema["title"] == "hfsm machine" and "states" in schema["properties"]
+
+
+def test_committed_schema_is_current(capsys: pytest.CaptureFixture[str]) -> None:
+    _, out, _ = run(capsys, "--schema")
+    assert (ROOT / "docs" / "machine.schema.json").read_text() == out, (
+        "run: hfsm-run --schema > docs/machine.schema.json"
+    )
+
+
+@pytest.mark.parametrize(
+    "argv", [["--dt", "0"], ["--max-time", "-1"], ["--agents", "A,b"], ["--world", "mars"], []]
+)
+def test_bad_arguments_exit_2(machine: Machine, argv: list[str]) -> None:
+    path = machine("m", "outcomes: [done]\nstates:\n  a: {do: wait, with: {seconds: 1}, on: {done: done}}\n")
+    args = [sys.executable, "-m", "hfsm.cli.run", *([str(path)] if argv else []), *argv]
+    done = subprocess.run(args, capture_output=True, text=True, check=False)
+    assert done.returncode == 2, done.stderr
+    assert "Traceback" not in done.stderr
+
+
+def test_not_utf8_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    path = tmp_path / "m.yaml"
+    path.write_bytes(b"outcomes: [done]\nstates: \xff\n")
+    code, _, err = run(capsys, path)
+    assert code == 2 and "m.yaml:2:9: error[E104]" in err
