@@ -2,7 +2,7 @@
 camera model (`sim.CameraModel`: intrinsics, mounting, head joints). No pybullet, no truth.
 
 Modules: `config` (PerceptionConfig, every threshold), `blobs` (table/robot blobs, ground
-distance and bearing).
+distance and bearing), `corners` (the V of Figure 5, long side test).
 """
 
 from sim.perception.blobs import (
@@ -26,18 +26,24 @@ from sim.perception.blobs import (
     to_hsv,
 )
 from sim.perception.config import DEFAULT_CONFIG, Camera, PerceptionConfig
+from sim.perception.corners import NO_CORNER, NO_EDGE, Edge, TableCorner, find_corner, top_face_mask
 
 __all__ = [
     "DEFAULT_CONFIG",
     "NO_BLOB",
+    "NO_CORNER",
+    "NO_EDGE",
     "NO_GROUND",
     "Blob",
     "Camera",
+    "Edge",
     "GroundEstimate",
     "PerceptionConfig",
+    "TableCorner",
     "blob_from_mask",
     "blob_ground",
     "colour_mask",
+    "find_corner",
     "find_robot",
     "find_robots",
     "find_table",
@@ -49,4 +55,5 @@ __all__ = [
     "table_distance",
     "table_mask",
     "to_hsv",
+    "top_face_mask",
 ]

@@ -65,7 +65,9 @@ class PerceptionConfig:
     table_top_height: float = 0.33     # top surface above the floor (m)
     table_edge_height: float = 0.30    # underside of the top: the lower edge of its rim (m)
     # corners and edges
-    leg_width_fraction: float = 0.04   # horizontal opening width (of image width) removing legs
+    top_face_min_value: int = 200      # the lit top face renders v ~220, side faces and legs
+                                       # 148..178 (sim light: ambient 0.65, diffuse 0.35, overhead)
+    fit_margin_fraction: float = 0.015  # outline columns left out next to a V's vertex and ends
     min_edge_px_fraction: float = 0.04  # shortest edge segment worth fitting (of image width)
     v_min_slope: float = 0.05          # |dv/du| each arm of the V must exceed
     meet_tolerance_px: float = 2.0     # Figure 6: table edge within this of the floor-wall line
