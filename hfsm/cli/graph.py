@@ -84,17 +84,22 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def _main(args: argparse.Namespace) -> int:
-    files = machine_files(args.paths)
-    figures = _figures(args, files)
+    outputs = draw(args)
+    write_all(args.output, outputs)
+    print(f"hfsm-graph: wrote {len(outputs)} files to {args.output}", file=sys.stderr)
+    return 0
+
+
+def draw(args: argparse.Namespace) -> dict[str, bytes]:
+    """Every output file's name and bytes, all drawn in memory; raises on bad input."""
+    figures = _figures(args, machine_files(args.paths))
     link_ext = next((f for f in args.format if f != "dot"), "svg")
     outputs: dict[str, bytes] = {}
     for figure in figures:
         dot = to_dot(figure, link_ext)
         for fmt in args.format:
             outputs[f"{figure.name}.{fmt}"] = render(dot, fmt)
-    write_all(args.output, outputs)
-    print(f"hfsm-graph: wrote {len(outputs)} files to {args.output}", file=sys.stderr)
-    return 0
+    return outputs
 
 
 def machine_files(paths: Sequence[Path]) -> list[Path]:

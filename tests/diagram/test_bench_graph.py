@@ -1,0 +1,37 @@
+"""tools/bench_graph.py: it times a folder and rewrites only its own section of PERFORMANCE.md."""
+
+from __future__ import annotations
+
+import importlib.util
+from pathlib import Path
+from types import ModuleType
+
+from .helpers_diagram import DATA, ROOT
+
+TOOL = ROOT / "tools" / "bench_graph.py"
+
+
+def _load() -> ModuleType:
+    spec = importlib.util.spec_from_file_location("bench_graph", TOOL)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_write_doc_replaces_only_its_section(tmp_path: Path) -> None:
+    bench = _load()
+    doc = tmp_path / "PERFORMANCE.md"
+    doc.write_text("<!-- bench_sim:start -->\nsim\n<!-- bench_sim:end -->\n")
+    bench.write_doc(doc, ["first"])
+    assert (
+        doc.read_text()
+        == f"<!-- bench_sim:start -->\nsim\n<!-- bench_sim:end -->\n\n{bench.START}\nfirst\n{bench.END}\n"
+    )
+    bench.write_doc(doc, ["second"])
+    assert doc.read_text().count("first") == 0 and doc.read_text().count("second") == 1
+    assert doc.read_text().startswith("<!-- bench_sim:start -->\nsim\n")
+
+
+def test_drawing_a_folder_is_timed() -> None:
+    assert 0 < _load().seconds_to_draw(DATA, "dot", repeats=1) < 10
