@@ -71,7 +71,9 @@ class PerfectRadio:
         return due
 
     def next_delivery(self) -> int | None:
-        return min((m.sent_tick + 1 for m in self._in_flight), default=None)
+        if not self._in_flight:
+            return None
+        return min(m.sent_tick for m in self._in_flight) + 1
 
 
 class NullWorld(PerfectRadio):

@@ -50,27 +50,28 @@ class Frame:
     """One running machine: its memory, its current state and its timers."""
 
     __slots__ = (
-        "activity",
-        "deadline",
-        "entered",
-        "machine",
-        "params",
-        "scope",
-        "state",
-        "state_deadline",
-        "vars",
-    )
+        "_scope", "activity", "agent", "deadline", "entered", "machine", "params", "state",
+        "state_deadline", "vars",
+    )  # fmt: skip
 
     def __init__(self, machine: RMachine, params: dict[str, Any], agent: str) -> None:
         self.machine = machine
         self.params = params
-        self.vars = machine.fresh_vars()
-        self.scope = Scope(params, self.vars, agent)
+        self.vars = machine.fresh_vars() if machine.var_init else {}
+        self.agent = agent
+        self._scope: Scope | None = None
         self.state: RState = machine.initial  # type: ignore[assignment]
         self.deadline: int | None = None
         self.state_deadline: int | None = None
         self.entered = 0
         self.activity: Activity | None = None
+
+    @property
+    def scope(self) -> Scope:
+        """What expressions read; made on first use, since most frames never evaluate one."""
+        if self._scope is None:
+            self._scope = Scope(self.params, self.vars, self.agent)
+        return self._scope
 
 
 @dataclass
@@ -110,10 +111,6 @@ class Agent:
                 return self.mailbox.pop(i)
         return None
 
-    def record(self, behaviour: str, event: str, ticks: int) -> None:
-        stats = self.stats.get(behaviour)
-        if stats is None:
-            stats = self.stats[behaviour] = BehaviourStats()
-        stats.calls += 1
-        stats.ticks += ticks
-        stats.events[event] = stats.events.get(event, 0) + 1
+    def new_stats(self, behaviour: str) -> BehaviourStats:
+        stats = self.stats[behaviour] = BehaviourStats()
+        return stats

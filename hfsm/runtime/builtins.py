@@ -8,7 +8,6 @@ from typing import TYPE_CHECKING, Any
 
 from hfsm.names import RESERVED_MESSAGES, is_name
 from hfsm.runtime.agent import Agent, Event, Frame
-from hfsm.runtime.program import span_ticks
 
 if TYPE_CHECKING:
     from hfsm.runtime.engine import Engine
@@ -53,14 +52,14 @@ def _error(text: str) -> Event:
 
 
 def start_wait(engine: Engine, agent: Agent, frame: Frame, params: dict[str, Any]) -> Wait | Event:
-    seconds = params.get("seconds")
+    seconds = params["seconds"]
     if seconds is None:
         return Wait(None)
-    if not math.isfinite(seconds):
-        return _error(f"wait: seconds must be finite, not {seconds}")
     if seconds <= 0:
         return DONE
-    return Wait(engine.tick + span_ticks(seconds, engine.dt))
+    if not math.isfinite(seconds):
+        return _error(f"wait: seconds must be finite, not {seconds}")
+    return Wait(engine.tick + engine.span(seconds))
 
 
 def start_wait_for(engine: Engine, agent: Agent, frame: Frame, params: dict[str, Any]) -> WaitFor | Event:

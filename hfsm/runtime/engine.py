@@ -10,12 +10,12 @@ from typing import Any
 
 from hfsm.builtins import BUILTINS
 from hfsm.expr import ExprValueError
-from hfsm.primitive import Message, Primitive
+from hfsm.primitive import Message
 from hfsm.runtime.agent import Agent, AgentResult, Event, Frame
 from hfsm.runtime.builtins import STARTERS
 from hfsm.runtime.primitives import PrimitiveActivity, RunContext
-from hfsm.runtime.program import RMachine, RState, span_ticks
-from hfsm.spec import BehaviourSpec, coerce, is_finite_number, type_ok
+from hfsm.runtime.program import RMachine, RState, resolve_params, span_ticks
+from hfsm.spec import is_finite_number
 from hfsm.trace import TraceSink
 from hfsm.world import World
 
@@ -39,6 +39,8 @@ class Engine:
         self.dt = dt
         self.trace = trace
         self.tick = 0
+        self.running = len(agents)  # agents whose top machine has not ended
+        self.spans: dict[float, int] = {}  # seconds -> ticks, for spans seen before
 
     @property
     def time(self) -> float:
@@ -142,8 +144,12 @@ class Engine:
         frame = agent.stack[level]
         if self.trace is not None:
             self.emit(agent, agent.path(level), "exit", event=event)
-        if not frame.state.is_choice:
-            agent.record(frame.state.do, event, self.tick - frame.entered)
+        state = frame.state
+        if not state.is_choice:
+            stats = agent.stats.get(state.do) or agent.new_stats(state.do)
+            stats.calls += 1
+            stats.ticks += self.tick - frame.entered
+            stats.events[event] = stats.events.get(event, 0) + 1
 
     def _enter(self, agent: Agent, level: int, state: RState) -> Event | None:
         frame = agent.stack[level]
@@ -167,7 +173,7 @@ class Engine:
             message = agent.take_message(state.msg_arcs)
             if message is not None:
                 return Event(message.name, message=message)
-        params = self._params(state, frame)
+        params = state.params if state.params is not None else self._params(state, frame)
         if params.__class__ is Event:
             return params
         return self._call(agent, state, frame, params)  # type: ignore[arg-type]
@@ -195,38 +201,26 @@ class Engine:
         return max(1, span_ticks(seconds, self.dt))
 
     def _params(self, state: RState, frame: Frame) -> dict[str, Any] | Event:
-        spec = _spec(state.callee)
-        given = state.with_const
-        if given is None:
-            try:
-                given = {k: v.fn(frame.scope) for k, v in state.with_.items()}
-            except ExprValueError as exc:
-                return Event("error", error=str(exc))
-        if spec.open_params:
-            return dict(given)
-        params = {}
-        for name, param in spec.params.items():
-            if name in given:
-                value = given[name]
-                if not type_ok(value, param.type):
-                    text = f"param '{name}' of '{spec.name}' takes {param.type}, not {value!r}"
-                    return Event("error", error=text)
-                params[name] = coerce(value, param.type)
-            elif not param.required:
-                params[name] = param.default
-        return params
+        if state.params is not None:
+            return state.params
+        try:
+            given = {k: v.fn(frame.scope) for k, v in state.with_.items()}
+        except ExprValueError as exc:
+            return Event("error", error=str(exc))
+        params = resolve_params(state.spec, given)  # type: ignore[arg-type]
+        return Event("error", error=params) if isinstance(params, str) else params
 
     def _call(self, agent: Agent, state: RState, frame: Frame, params: dict[str, Any]) -> Event | None:
-        callee = state.callee
-        if callee.__class__ is RMachine:
-            agent.stack.append(Frame(callee, params, agent.name))
+        kind = state.kind
+        if kind == "machine":
+            agent.stack.append(Frame(state.callee, params, agent.name))  # type: ignore[arg-type]
             return self._run_new_machine(agent)
-        if callee.__class__ is Primitive:
+        if kind == "primitive":
             ctx = RunContext(self, agent, state.do)
             origin = "/".join(agent.path(len(agent.stack) - 1))
-            activity: Any = PrimitiveActivity(callee, ctx, params, origin)
+            activity: Any = PrimitiveActivity(state.callee, ctx, params, origin)  # type: ignore[arg-type]
         else:
-            activity = STARTERS[state.do](self, agent, frame, params)
+            activity = STARTERS[kind](self, agent, frame, params)
         event = activity if activity.__class__ is Event else activity.advance(self.tick)
         if event is None:
             frame.activity = activity
@@ -253,12 +247,18 @@ class Engine:
     def _finish(self, agent: Agent, outcome: str) -> Event:
         """The innermost machine ends in `outcome`: evaluate its outputs and pop its frame."""
         frame = agent.stack.pop()
+        machine = frame.machine
+        if not machine.outputs:
+            ending = machine.endings.get(outcome)
+            if ending is None:
+                ending = machine.endings[outcome] = Event(outcome, {})
+            return ending
         outputs = {}
         try:
-            for name, value in frame.machine.outputs.items():
+            for name, value in machine.outputs.items():
                 outputs[name] = value.fn(frame.scope)
         except ExprValueError as exc:
-            return Event("error", error=f"outputs of '{frame.machine.name}': {exc}")
+            return Event("error", error=f"outputs of '{machine.name}': {exc}")
         return Event(outcome, outputs)
 
     def _abort(self, agent: Agent, event: Event) -> Event:
@@ -280,6 +280,12 @@ class Engine:
             stack[level].activity.cancel()  # type: ignore[union-attr]
             stack[level].activity = None
 
+    def span(self, seconds: float) -> int:
+        ticks = self.spans.get(seconds)
+        if ticks is None:
+            ticks = self.spans[seconds] = span_ticks(seconds, self.dt)
+        return ticks
+
     def stop(self, agent: Agent) -> None:
         """End an agent that has not ended: cancel what runs, close its trace."""
         if not agent.started:
@@ -288,6 +294,7 @@ class Engine:
         self.emit(agent, [agent.top], "exit", outcome=None)
 
     def _end_agent(self, agent: Agent, event: Event) -> None:
+        self.running -= 1
         if event.name == "error" and event.goto is None:
             agent.result = AgentResult(None, {}, self.time)
             self.emit(agent, [agent.top], "exit", outcome=None)
@@ -321,12 +328,6 @@ class Engine:
             agent.mailbox.append(message)
             path = agent.path(len(agent.stack) - 1) if agent.stack else [agent.top]
             self.emit(agent, path, "receive", message=message.name, sender=message.sender, data=message.data)
-
-
-def _spec(callee: Any) -> BehaviourSpec:
-    if callee.__class__ is BehaviourSpec:
-        return callee
-    return callee.spec  # type: ignore[no-any-return]
 
 
 __all__ = ["BUILTINS", "Engine", "FatalError"]

@@ -14,10 +14,8 @@ from hfsm.library import MachineFile
 from hfsm.model import CallState, IfBranch, Machine
 from hfsm.primitive import Primitive
 from hfsm.registry import Registry
-from hfsm.spec import BehaviourSpec
+from hfsm.spec import BehaviourSpec, coerce, type_ok
 from hfsm.values import Value, compile_value
-
-Target = "RState | str"  # a state, or an outcome of the machine
 
 
 def span_ticks(seconds: float, dt: float) -> int:
@@ -25,31 +23,38 @@ def span_ticks(seconds: float, dt: float) -> int:
     return math.ceil(seconds / dt - 1e-9)
 
 
+def resolve_params(spec: BehaviourSpec, given: Mapping[str, Any]) -> dict[str, Any] | str:
+    """The params a callee gets: given values typed, defaults filled; or a problem as text."""
+    if spec.open_params:
+        return dict(given)
+    params = {}
+    for name, param in spec.params.items():
+        if name in given:
+            value = given[name]
+            if not type_ok(value, param.type):
+                return f"param '{name}' of '{spec.name}' takes {param.type}, not {value!r}"
+            params[name] = coerce(value, param.type)
+        elif not param.required:
+            params[name] = param.default
+    return params
+
+
 class RState:
     __slots__ = (
-        "arcs",
-        "branches",
-        "callee",
-        "do",
-        "error_target",
-        "is_choice",
-        "machine",
-        "msg_arcs",
-        "name",
-        "save",
-        "timer",
-        "with_",
-        "with_const",
-    )
+        "arcs", "branches", "callee", "do", "error_target", "is_choice", "kind", "machine",
+        "msg_arcs", "name", "params", "save", "spec", "timer", "with_",
+    )  # fmt: skip
 
     def __init__(self, name: str, machine: RMachine) -> None:
         self.name = name
         self.machine = machine
         self.is_choice = False
         self.do = ""
-        self.callee: RMachine | Primitive | BehaviourSpec | None = None
+        self.kind = ""  # "machine", "primitive", or the built-in's name
+        self.callee: RMachine | Primitive | None = None
+        self.spec: BehaviourSpec | None = None
         self.with_: dict[str, Value] = {}
-        self.with_const: dict[str, Any] | None = None  # all of `with` when it holds no expression
+        self.params: dict[str, Any] | None = None  # the callee's params, when `with` holds no expression
         self.save: tuple[tuple[str, str], ...] = ()
         self.timer: int | Fn | None = None  # ticks, or an expression giving seconds
         self.arcs: dict[str, RState | str] = {}
@@ -59,7 +64,7 @@ class RState:
 
 
 class RMachine:
-    __slots__ = ("initial", "name", "outputs", "spec", "states", "timer", "var_fresh", "var_init")
+    __slots__ = ("endings", "initial", "name", "outputs", "spec", "states", "timer", "var_fresh", "var_init")
 
     def __init__(self, name: str, spec: BehaviourSpec) -> None:
         self.name = name
@@ -70,6 +75,7 @@ class RMachine:
         self.var_init: dict[str, Any] = {}
         self.var_fresh = False  # whether initial vars must be deep-copied on each call
         self.outputs: dict[str, Value] = {}
+        self.endings: dict[str, Any] = {}  # outcome -> its Event, shared when there are no outputs
 
     def fresh_vars(self) -> dict[str, Any]:
         return copy.deepcopy(self.var_init) if self.var_fresh else dict(self.var_init)
@@ -130,10 +136,14 @@ class Program:
         receives: set[str],
     ) -> None:
         rs.do = state.do
-        rs.callee = self.machines.get(state.do) or self.registry.get(state.do) or BUILTINS[state.do]
+        machine, prim = self.machines.get(state.do), self.registry.get(state.do)
+        rs.callee = machine or prim
+        rs.kind = "machine" if machine else "primitive" if prim else state.do
+        rs.spec = machine.spec if machine else prim.spec if prim else BUILTINS[state.do]
         rs.with_ = {k: compile_value(v, names) for k, v in state.with_.items()}
         if all(v.constant for v in rs.with_.values()):
-            rs.with_const = {k: v.literal for k, v in rs.with_.items()}
+            params = resolve_params(rs.spec, {k: v.literal for k, v in rs.with_.items()})
+            rs.params = params if isinstance(params, dict) else None
         rs.save = tuple(state.save.items())
         rs.timer = self._timer(state.timer, names)
         rs.msg_arcs = dict(any_msgs)

@@ -57,7 +57,7 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
         for agent in agents:
             agent.entries = 0
             engine.start(agent, top, options.params)
-        while any(a.result is None for a in agents):
+        while engine.running:
             following = _next_tick(engine) if world.static else engine.tick + 1
             if following is None:
                 return "blocked forever: " + _where(agents), ""
@@ -79,17 +79,21 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
 
 def _next_tick(engine: Engine) -> int | None:
     """In a static world, the next tick in which anything can happen; None when nothing can."""
-    candidates = [engine.world.next_delivery()]
+    now = engine.tick
+    best = engine.world.next_delivery() or sys.maxsize
     for agent in engine.agents:
-        if agent.result is not None:
+        if agent.result is not None or not agent.stack:
             continue
+        activity = agent.stack[-1].activity
+        if activity is not None and activity.deadline is not None and now < activity.deadline < best:
+            best = activity.deadline
         for frame in agent.stack:
-            candidates += (frame.deadline, frame.state_deadline)
-        activity = agent.stack[-1].activity if agent.stack else None
-        if activity is not None and activity.deadline is not None and activity.deadline < sys.maxsize:
-            candidates.append(activity.deadline)
-    due = [c for c in candidates if c is not None and c > engine.tick]
-    return min(due) if due else None
+            for deadline in (frame.deadline, frame.state_deadline):
+                if deadline is not None and now < deadline < best:
+                    best = deadline
+        if best == now + 1:
+            break
+    return None if best == sys.maxsize else best
 
 
 def _where(agents: list[Agent]) -> str:
