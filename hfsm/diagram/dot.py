@@ -143,7 +143,8 @@ def _edge(e: Edge) -> dict[str, str]:
     label = " | ".join(e.labels)
     if e.count is not None:
         label = f"{label} {TIMES}{e.count}" if label else f"{TIMES}{e.count}"
-        attrs["penwidth"] = f"{min(1.0 + e.count.bit_length() * 0.5, 4.0):g}"
+        width = max(min(1.0 + e.count.bit_length() * 0.5, 4.0), float(attrs.get("penwidth", 1)))
+        attrs["penwidth"] = f"{width:g}"
     if label:
         attrs["label"] = label
     if e.ltail:

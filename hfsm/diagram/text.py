@@ -37,16 +37,22 @@ def number(value: float) -> str:
 
 def value(v: Any) -> str:
     """An argument as a reader of the machine file would write it: expressions bare, strings quoted."""
+    return shorten(_plain(v), VALUE_WIDTH)
+
+
+def _plain(v: Any) -> str:
     if isinstance(v, str):
         match = _WHOLE_EXPR.match(v)
-        text = match.group(1).strip() if match else json.dumps(v, ensure_ascii=False)
-    elif isinstance(v, bool) or v is None:
-        text = json.dumps(v)
-    elif isinstance(v, int | float):
-        text = number(v)
-    else:
-        text = json.dumps(v, ensure_ascii=False, separators=(", ", ": "), default=str)
-    return shorten(text, VALUE_WIDTH)
+        return match.group(1).strip() if match else json.dumps(v, ensure_ascii=False)
+    if isinstance(v, bool) or v is None:
+        return json.dumps(v)
+    if isinstance(v, int | float):
+        return number(v)
+    if isinstance(v, dict):
+        return "{" + ", ".join(f"{k}: {_plain(x)}" for k, x in v.items()) + "}"
+    if isinstance(v, list):
+        return "[" + ", ".join(_plain(x) for x in v) + "]"
+    return str(v)
 
 
 def call(do: str, args: Mapping[str, Any]) -> tuple[str, ...]:

@@ -16,6 +16,8 @@ def test_values_read_as_in_the_machine_file() -> None:
     assert text.value(True) == "true"
     assert text.value(None) == "null"
     assert text.value([1, 2]) == "[1, 2]"
+    assert text.value({"hits": "${vars.hits + 1}"}) == "{hits: vars.hits\u2026"
+    assert text.value({"a": "b"}) == "{a: \"b\"}"
 
 
 def test_long_values_are_cut_with_an_ellipsis() -> None:
