@@ -3,7 +3,8 @@ camera model (`sim.CameraModel`: intrinsics, mounting, head joints). No pybullet
 
 Modules: `config` (PerceptionConfig, every threshold), `blobs` (table/robot blobs, ground
 distance and bearing), `corners` (the V of Figure 5, long side test), `edges` (floor-wall edge,
-table top edge, Figure 6).
+table top edge, Figure 6), `down` (the down camera: blue share, near edge
+angle and distance for aligning).
 """
 
 from sim.perception.blobs import (
@@ -28,6 +29,7 @@ from sim.perception.blobs import (
 )
 from sim.perception.config import DEFAULT_CONFIG, Camera, PerceptionConfig
 from sim.perception.corners import NO_CORNER, NO_EDGE, Edge, TableCorner, find_corner, top_face_mask
+from sim.perception.down import DownView, down_view
 from sim.perception.edges import (
     NO_FLOOR_WALL,
     NO_MEET,
@@ -48,6 +50,7 @@ __all__ = [
     "NO_MEET",
     "Blob",
     "Camera",
+    "DownView",
     "Edge",
     "FloorWall",
     "GroundEstimate",
@@ -57,6 +60,7 @@ __all__ = [
     "blob_from_mask",
     "blob_ground",
     "colour_mask",
+    "down_view",
     "find_corner",
     "find_robot",
     "find_robots",
