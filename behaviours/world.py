@@ -1,16 +1,12 @@
 """The `hfsm.worlds` entry point for `--world sim`.
 
 Light on purpose: hfsm-run loads it for every run to learn the flags; the simulator (and
-pybullet, which prints a banner on stdout when imported) is imported only when a sim world is made.
+pybullet) is imported only when a sim world is made.
 """
 
 from __future__ import annotations
 
 import argparse
-import contextlib
-import os
-import sys
-from collections.abc import Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -20,19 +16,6 @@ if TYPE_CHECKING:
     from behaviours.simworld import SimWorld
 
 DEFAULT_SCENARIO = "opposite_long_side"
-
-
-@contextlib.contextmanager
-def stdout_to_stderr() -> Iterator[None]:
-    """Send what C code prints on file descriptor 1 to stderr, so stdout stays clean JSON."""
-    sys.stdout.flush()
-    saved = os.dup(1)
-    try:
-        os.dup2(2, 1)
-        yield
-    finally:
-        os.dup2(saved, 1)
-        os.close(saved)
 
 
 class SimWorldFactory:
@@ -58,10 +41,9 @@ class SimWorldFactory:
         )
 
     def create(self, args: argparse.Namespace, seed: int) -> SimWorld:
-        with stdout_to_stderr():
-            from behaviours.simworld import SimWorld, load_scenario
-            from sim import World
-            from sim.recorder import Recorder
+        from behaviours.simworld import SimWorld, load_scenario
+        from sim import World
+        from sim.recorder import Recorder
 
         scenario, _ = load_scenario(args.scenario)
         size = _image_size(args.image_size)

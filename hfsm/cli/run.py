@@ -13,6 +13,7 @@ from pathlib import Path
 
 from hfsm.cli import report
 from hfsm.cli.params import parse_params
+from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import HfsmError, UsageError, UserError
 from hfsm.load import Loaded, load
 from hfsm.names import is_name
@@ -26,9 +27,10 @@ from hfsm.world import WORLDS_GROUP, NullWorld, World, WorldFactory
 
 def _factories() -> dict[str, WorldFactory]:
     found: dict[str, WorldFactory] = {}
-    for ep in sorted(entry_points(group=WORLDS_GROUP), key=lambda e: e.name):
-        factory = ep.load()()
-        found[factory.name] = factory
+    with stdout_to_stderr():
+        for ep in sorted(entry_points(group=WORLDS_GROUP), key=lambda e: e.name):
+            factory = ep.load()()
+            found[factory.name] = factory
     return found
 
 
@@ -83,7 +85,8 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         return 0
     if args.file is None:
         raise UsageError("give a machine file (or --schema)")
-    registry = Registry.discover()
+    with stdout_to_stderr():
+        registry = Registry.discover()
     loaded = load([args.file], libs=args.lib, registry=registry, strict=args.strict)
     report.findings(loaded.warnings)
     if args.check:
@@ -110,7 +113,8 @@ def _world(
         raise UsageError(f"these machines call primitives of --world {wrong[0]}, not --world {name}")
     if name == "none":
         return NullWorld()
-    return factories[name].create(args, args.seed)
+    with stdout_to_stderr():
+        return factories[name].create(args, args.seed)
 
 
 def _used(loaded: Loaded, behaviour: str) -> bool:

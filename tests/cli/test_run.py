@@ -132,3 +132,10 @@ def test_not_utf8_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> No
     path.write_bytes(b"outcomes: [done]\nstates: \xff\n")
     code, _, err = run(capsys, path)
     assert code == 2 and "m.yaml:2:9: error[E104]" in err
+
+
+def test_stdout_holds_only_the_json_even_when_plugins_print() -> None:
+    args = [sys.executable, "-m", "hfsm.cli.run", str(ROOT / "examples" / "hello.yaml"), "--json"]
+    done = subprocess.run(args, capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    assert json.loads(done.stdout) == {"outcome": "done", "outputs": {"count": 2}, "time": 0.5}
