@@ -1,0 +1,46 @@
+"""Every example runs as its doc says; every machine file in the repository passes the strict checks."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from helpers import execute
+
+from hfsm.load import load
+from hfsm.registry import Registry
+
+ROOT = Path(__file__).resolve().parent.parent
+EXAMPLES = ROOT / "examples"
+
+EXPECTED = {
+    "hello": (["robot"], {"robot": ("done", 0.5)}),
+    "blink": (["robot"], {"robot": ("timeout", 60.0)}),
+    "watchdog": (["robot"], {"robot": ("timeout", 3.0)}),
+    "ping_pong": (["a", "b"], {"a": ("lost", 0.2), "b": ("won", 0.15)}),
+    "timeouts": (["robot"], {"robot": ("failure", 4.5)}),
+    "recover": (["robot"], {"robot": ("failure", 0.0)}),
+}
+
+
+def machine_files() -> list[Path]:
+    return sorted([*EXAMPLES.glob("*.yaml"), *(ROOT / "machines").glob("*.yaml")])
+
+
+def test_every_example_has_an_expectation() -> None:
+    assert sorted(p.stem for p in EXAMPLES.glob("*.yaml")) == sorted(EXPECTED)
+
+
+@pytest.mark.parametrize("name", sorted(EXPECTED))
+def test_example_runs(name: str) -> None:
+    agents, expected = EXPECTED[name]
+    result, records = execute(EXAMPLES / f"{name}.yaml", agents=agents)
+    assert result.error is None
+    assert {a: (r.outcome, r.time) for a, r in result.agents.items()} == expected
+    assert records == execute(EXAMPLES / f"{name}.yaml", agents=agents)[1], "same seed, same trace"
+
+
+@pytest.mark.parametrize("path", machine_files(), ids=lambda p: f"{p.parent.name}/{p.name}")
+def test_machine_passes_strict_checks(path: Path) -> None:
+    loaded = load([path], registry=Registry.discover(), strict=True)
+    assert loaded.warnings == [] or all(w.severity.value == "error" for w in loaded.warnings)
