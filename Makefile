@@ -27,6 +27,5 @@ clean:
 
 # Diagrams of machines/ and examples/ (SVG for people, DOT for the staleness test): see docs/GRAPH.md.
 figures: $(STAMP)
-	rm -f docs/figures/*.svg docs/figures/*.dot docs/figures/examples/*.svg docs/figures/examples/*.dot
-	$(BIN)/hfsm-graph machines -o docs/figures --format svg,dot
-	$(BIN)/hfsm-graph examples -o docs/figures/examples --format svg,dot --no-legend
+	$(BIN)/hfsm-graph machines -o docs/figures --format svg,dot --prune
+	$(BIN)/hfsm-graph examples -o docs/figures/examples --format svg,dot --no-legend --prune

@@ -65,6 +65,9 @@ def build_parser() -> argparse.ArgumentParser:
     )
     p.add_argument("--no-overview", action="store_true", help="no call-graph figure")
     p.add_argument("--no-legend", action="store_true", help="no legend figure")
+    p.add_argument(
+        "--prune", action="store_true", help="after writing, delete DIR's other files of the chosen formats"
+    )
     return p
 
 
@@ -87,6 +90,11 @@ def _main(args: argparse.Namespace) -> int:
     outputs = draw(args)
     write_all(args.output, outputs)
     print(f"hfsm-graph: wrote {len(outputs)} files to {args.output}", file=sys.stderr)
+    if args.prune:
+        for stale in sorted(args.output.iterdir()):
+            if stale.is_file() and stale.suffix[1:] in args.format and stale.name not in outputs:
+                stale.unlink()
+                print(f"hfsm-graph: removed {stale}", file=sys.stderr)
     return 0
 
 

@@ -75,7 +75,7 @@ def timer(t: float | str) -> str:
     """A timer's duration: `30 s`, or its expression."""
     if isinstance(t, str):
         match = _WHOLE_EXPR.match(t)
-        return shorten(match.group(1).strip() if match else t, VALUE_WIDTH)
+        return shorten(match.group(1).strip() if match else t, VALUE_WIDTH) + " s"
     return f"{number(t)} s"
 
 

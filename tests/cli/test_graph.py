@@ -99,3 +99,10 @@ def test_the_console_script_is_installed() -> None:
     script = Path(sys.executable).parent / "hfsm-graph"
     done = subprocess.run([str(script), "--help"], capture_output=True, text=True, check=False)
     assert done.returncode == 0 and "--depth" in done.stdout
+
+
+def test_prune_removes_figures_of_machines_that_are_gone(tmp_path: Path) -> None:
+    (tmp_path / "old.svg").write_text("<svg/>")
+    (tmp_path / "keep.txt").write_text("x")
+    assert main([str(DATA / "lift.yaml"), "-o", str(tmp_path), "--prune", "--no-legend", "--no-overview"]) == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["keep.txt", "lift.svg"]

@@ -37,7 +37,7 @@ def test_a_call_breaks_after_commas() -> None:
 def test_timers_params_and_conditions() -> None:
     assert text.timer(30) == "30 s"
     assert text.timer(0.5) == "0.5 s"
-    assert text.timer("${params.limit}") == "params.limit"
+    assert text.timer("${params.limit}") == "params.limit s"
     assert text.params({}) == ""
     params = {"steps": Param(type="int", default=3), "role": Param(type="str")}
     assert text.params(params) == "(steps: int = 3, role: str)"
