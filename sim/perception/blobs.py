@@ -83,11 +83,15 @@ def colour_hue(colour: RGB) -> int:
 def colour_mask(hsv: np.ndarray, colour: RGB, cfg: PerceptionConfig = DEFAULT_CONFIG) -> np.ndarray:
     """Pixels whose hue is within `hue_tolerance` of the colour's and which are saturated and
     bright enough (shading changes value, not hue). Boolean H x W."""
-    hue = colour_hue(colour)
-    diff = np.abs(hsv[..., 0].astype(np.int16) - hue)
-    diff = np.minimum(diff, 180 - diff)
-    return np.asarray((diff <= cfg.hue_tolerance) & (hsv[..., 1] >= cfg.min_saturation)
-                      & (hsv[..., 2] >= cfg.min_value))
+    hue_ok = hue_lut(colour_hue(colour), cfg.hue_tolerance)[hsv[..., 0]]
+    sv = cv2.inRange(hsv, (0, cfg.min_saturation, cfg.min_value), (255, 255, 255))
+    return np.asarray(hue_ok & (sv > 0))
+
+
+def hue_lut(hue: int, tolerance: int) -> np.ndarray:
+    """Boolean table over OpenCV hues 0..255: within `tolerance` of `hue` (circular, 180)."""
+    diff = np.abs(np.arange(256) - hue)
+    return np.asarray(np.minimum(diff, 180 - diff % 180) <= tolerance)
 
 
 def table_mask(image: np.ndarray, cfg: PerceptionConfig = DEFAULT_CONFIG) -> np.ndarray:
@@ -98,6 +102,8 @@ def table_mask(image: np.ndarray, cfg: PerceptionConfig = DEFAULT_CONFIG) -> np.
 def _clean(mask: np.ndarray, cfg: PerceptionConfig) -> tuple[np.ndarray, int]:
     """Drop components below `min_blob_fraction` of the image; the union of the rest."""
     m = np.asarray(mask, dtype=np.uint8)
+    if not cv2.countNonZero(m):
+        return m.astype(bool), 0
     if cfg.open_kernel > 1:
         kernel = np.ones((cfg.open_kernel, cfg.open_kernel), np.uint8)
         m = np.asarray(cv2.morphologyEx(m, cv2.MORPH_OPEN, kernel), dtype=np.uint8)
@@ -112,15 +118,16 @@ def _clean(mask: np.ndarray, cfg: PerceptionConfig) -> tuple[np.ndarray, int]:
 def blob_from_mask(mask: np.ndarray, cfg: PerceptionConfig = DEFAULT_CONFIG) -> Blob:
     """The union of the mask's components that are not noise, described as a Blob."""
     clean, count = _clean(mask, cfg)
-    rows = np.nonzero(clean.any(axis=1))[0]
-    if rows.size == 0:
+    m = cv2.moments(clean.astype(np.uint8), binaryImage=True)
+    if m["m00"] == 0:
         return NO_BLOB
+    rows = np.nonzero(clean.any(axis=1))[0]
     cols = np.nonzero(clean.any(axis=0))[0]
-    vs, us = np.nonzero(clean)
     h, w = mask.shape
+    area = round(m["m00"])
     left, top, right, bottom = int(cols[0]), int(rows[0]), int(cols[-1]), int(rows[-1])
-    return Blob(found=True, area_px=int(vs.size), area_fraction=vs.size / mask.size,
-                centroid=(float(us.mean()) + 0.5, float(vs.mean()) + 0.5),
+    return Blob(found=True, area_px=area, area_fraction=area / mask.size,
+                centroid=(m["m10"] / m["m00"] + 0.5, m["m01"] / m["m00"] + 0.5),
                 bbox=(left, top, right, bottom), lowest_row=bottom,
                 lowest_u=float(np.nonzero(clean[bottom])[0].mean()) + 0.5, components=count,
                 touches_left=left == 0, touches_right=right == w - 1, touches_top=top == 0,

@@ -73,6 +73,7 @@ class PerceptionConfig:
     meet_tolerance_px: float = 2.0     # Figure 6: table edge within this of the floor-wall line
     wall_min_run: int = 2              # wall pixels needed directly above a floor-wall boundary
     down_min_fraction: float = 0.02    # least blue share of the down image for an edge fit
+    max_plane_points: int = 48         # outline points put through the camera model per fit
 
 
 DEFAULT_CONFIG = PerceptionConfig()

@@ -61,7 +61,8 @@ def down_view(image: np.ndarray, camera: Camera, cfg: PerceptionConfig = DEFAULT
     fit = fit_line(us, vs) if us.size >= scaled(cfg.min_edge_px_fraction, w, 3) else None
     if fit is None:
         return DownView(fraction)
-    xs, ys = _on_plane(camera, us, vs, cfg.table_top_height + table_lift)
+    step = max(1, us.size // cfg.max_plane_points)
+    xs, ys = _on_plane(camera, us[::step], vs[::step], cfg.table_top_height + table_lift)
     body = fit_line(ys, xs)           # x = a + b * y
     if body is None:
         return DownView(fraction)

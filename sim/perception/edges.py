@@ -25,6 +25,7 @@ from sim.perception.blobs import (
     _clean,
     colour_hue,
     ground_estimate,
+    hue_lut,
     table_mask,
     to_hsv,
 )
@@ -77,10 +78,8 @@ def wall_floor_masks(image: np.ndarray, cfg: PerceptionConfig = DEFAULT_CONFIG
     hsv = to_hsv(image)
     s, v = hsv[..., 1], hsv[..., 2]
     wall = (s <= cfg.wall_max_saturation) & (v >= cfg.wall_min_value)
-    diff = np.abs(hsv[..., 0].astype(np.int16) - colour_hue(cfg.floor_colour))
-    diff = np.minimum(diff, 180 - diff)
     lo, hi = cfg.floor_saturation
-    floor = (diff <= cfg.hue_tolerance) & (s >= lo) & (s <= hi)
+    floor = hue_lut(colour_hue(cfg.floor_colour), cfg.hue_tolerance)[hsv[..., 0]] & (s >= lo) & (s <= hi)
     return np.asarray(wall), np.asarray(floor)
 
 
