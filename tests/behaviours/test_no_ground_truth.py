@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-ADAPTERS = {"world.py", "simworld.py"}  # the world seam itself: it holds the World to step and score it
+ADAPTERS = {"world.py", "simworld.py", "trial.py"}  # the world seam: it holds the World to step and score it
 FORBIDDEN_MODULES = (
     "pybullet",
     "sim.world",

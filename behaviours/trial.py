@@ -1,0 +1,79 @@
+"""One seeded run of a machine in the simulator, as plain data: for benchmarks and reproduction."""
+
+from __future__ import annotations
+
+import time
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+from typing import Any
+
+from behaviours.simworld import SimWorld, load_scenario
+from hfsm.load import load
+from hfsm.registry import Registry
+from hfsm.runtime.program import Program
+from hfsm.runtime.run import RunOptions, run
+from hfsm.trace import JsonlTrace
+from sim import World
+
+
+@dataclass(frozen=True)
+class TrialSpec:
+    machine: str
+    scenario: str
+    seed: int
+    params: dict[str, Any] = field(default_factory=dict)
+    max_time: float = 2400.0
+    dt: float = 0.05
+    trace: str | None = None
+    video: str | None = None
+
+
+@dataclass
+class TrialResult:
+    spec: TrialSpec
+    outcomes: dict[str, str | None]
+    time: float
+    error: str | None
+    score: dict[str, Any]
+    seconds: dict[str, dict[str, float]]  # agent -> behaviour -> total simulated seconds
+    calls: dict[str, dict[str, int]]
+    wall: float
+
+    def as_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+
+def run_trial(spec: TrialSpec) -> TrialResult:
+    """Load, check and run `spec.machine` for the scenario's robots; never raises for a failed run."""
+    started = time.perf_counter()
+    registry = Registry.discover()
+    loaded = load([Path(spec.machine)], registry=registry)
+    top = loaded.roots[0]
+    params = {k: p.default for k, p in top.model.params.items() if not p.required}
+    params.update(spec.params)
+    scenario, _ = load_scenario(spec.scenario)
+    recorder = _recorder(spec.video)
+    world = SimWorld(World(scenario, spec.seed, recorder=recorder))
+    trace = JsonlTrace(Path(spec.trace)) if spec.trace else None
+    try:
+        options = RunOptions(top.name, world.agent_names(), params, spec.seed, spec.max_time)
+        result = run(Program(loaded.machines, registry, spec.dt), world, options, trace)
+        score = world.report()["score"]
+    finally:
+        if trace:
+            trace.close()
+        world.close()
+    seconds = {a: {b: s.ticks * spec.dt for b, s in t.items()} for a, t in result.stats.items()}
+    calls = {a: {b: s.calls for b, s in t.items()} for a, t in result.stats.items()}
+    outcomes = {a: r.outcome for a, r in result.agents.items()}
+    wall = time.perf_counter() - started
+    return TrialResult(spec, outcomes, result.time, result.error, score, seconds, calls, wall)
+
+
+def _recorder(video: str | None) -> Any:
+    if not video:
+        return None
+    from sim.recorder import Recorder
+
+    Path(video).parent.mkdir(parents=True, exist_ok=True)
+    return Recorder(video)
