@@ -1,0 +1,113 @@
+"""What a robot sees, put in its odometry frame: the table blob, the table top, the other robot."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from behaviours.approach.frames import Point, body_to_odom
+from behaviours.body import Body
+from sim.perception import Blob, blob_ground, find_robots, find_table, pixel_bearing
+from sim.perception.table_rect import NO_RECT, TableRect, fit_rect, outline_points
+
+HEAD_YAW_LIMIT = 2.0  # rad; within the NAO's +-119.5 deg
+
+
+@dataclass(frozen=True)
+class TableSighting:
+    """The table blob in one image, its bearing (body frame, head yaw included) and the
+    ground distance to its lowest pixel."""
+
+    blob: Blob
+    bearing: float
+    distance: float
+    clipped: bool
+
+
+@dataclass(frozen=True)
+class RobotSighting:
+    """Another robot: where its lowest pixel meets the floor, in the odometry frame."""
+
+    found: bool
+    position: Point = (math.nan, math.nan)
+    bearing: float = math.nan
+    distance: float = math.nan
+    blob: Blob | None = None
+
+
+NO_ROBOT = RobotSighting(found=False)
+
+
+def clamp_yaw(yaw: float) -> float:
+    return max(-HEAD_YAW_LIMIT, min(HEAD_YAW_LIMIT, yaw))
+
+
+def see_table(body: Body, yaw: float, pitch: float) -> TableSighting | None:
+    """Turn the head and look for the blue blob; None when it is not in view."""
+    body.look(clamp_yaw(yaw), pitch)
+    blob = find_table(body.image("forward"))
+    if not blob.found:
+        return None
+    camera = body.camera("forward")
+    ground = blob_ground(blob, camera)
+    bearing = pixel_bearing(camera, blob.centroid[0], blob.centroid[1])
+    return TableSighting(blob, bearing, ground.distance if ground.found else math.inf,
+                         ground.clipped)
+
+
+def table_points(body: Body, yaws: Sequence[float], pitch: float,
+                 value_ratio: float) -> list[np.ndarray]:
+    """Outline points of the top face from several head yaws, in the odometry frame."""
+    pose = body.odometry()
+    views = []
+    for yaw in yaws:
+        body.look(clamp_yaw(yaw), pitch)
+        pts = outline_points(body.image("forward"), body.camera("forward"), value_ratio)
+        views.append(np.array([body_to_odom(pose, (float(x), float(y))) for x, y in pts]
+                              ).reshape(-1, 2))
+    return views
+
+
+def observe_table(body: Body, centre: float, spread: float, pitch: float,
+                  value_ratio: float = 0.9, views: int = 3) -> TableRect:
+    """The table top as a rectangle in the odometry frame, from `views` head yaws spread
+    around the bearing `centre` (body frame). The robot stands still meanwhile."""
+    yaws = [centre + spread * (i - (views - 1) / 2) for i in range(views)]
+    points = table_points(body, yaws, pitch, value_ratio)
+    if sum(len(p) for p in points) == 0:
+        return NO_RECT
+    return fit_rect(points)
+
+
+def own_colour(body: Body, pitch: float = 0.5) -> int:
+    """Which robot colour is this robot: the colour of its own hands, seen from above."""
+    body.look(0.0, pitch)
+    blobs = find_robots(body.image("down"))
+    return int(np.argmax([b.area_px if b.found else 0 for b in blobs]))
+
+
+def see_robot(body: Body, yaw: float, pitch: float, own: int) -> RobotSighting:
+    """The largest blob of another robot's colour in this view, if any."""
+    body.look(clamp_yaw(yaw), pitch)
+    blobs = [b for i, b in enumerate(find_robots(body.image("forward"))) if i != own and b.found]
+    if not blobs:
+        return NO_ROBOT
+    blob = max(blobs, key=lambda b: b.area_px)
+    camera = body.camera("forward")
+    ground = blob_ground(blob, camera)
+    bearing = pixel_bearing(camera, blob.lowest_u, blob.lowest_row + 1.0)
+    if not ground.found:
+        return RobotSighting(True, bearing=bearing, distance=math.inf, blob=blob)
+    return RobotSighting(True, body_to_odom(body.odometry(), (ground.x, ground.y)), bearing,
+                         ground.distance, blob)
+
+
+def scan_for_robot(body: Body, yaws: Sequence[float], pitch: float, own: int) -> RobotSighting:
+    for yaw in yaws:
+        seen = see_robot(body, yaw, pitch, own)
+        if seen.found:
+            return seen
+    return NO_ROBOT
