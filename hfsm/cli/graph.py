@@ -14,6 +14,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from hfsm.cli import report
+from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.diagram.dot import to_dot
 from hfsm.diagram.extract import Sources, machine_figure, overview
 from hfsm.diagram.legend import LEGEND, legend
@@ -130,7 +131,8 @@ def _figures(args: argparse.Namespace, files: list[Path]) -> list[Figure]:
     figures: list[Figure] = []
     names: list[str] = []
     if files:
-        registry = Registry.discover()
+        with stdout_to_stderr():
+            registry = Registry.discover()
         loaded = load(files, libs=args.lib, registry=registry)
         src = Sources.from_loaded(loaded, registry)
         names = [mf.name for mf in loaded.roots]
