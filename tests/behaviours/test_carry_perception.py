@@ -1,0 +1,70 @@
+"""sim.perception.carry against ground truth: the near edge, the table's reach to each side,
+the wall to each side, from a robot standing at the table as the carry leaves it."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+
+import pytest
+from carry_scene import GRIP_Y, TABLE_X, at_table
+
+from sim import World, scenario_from_dict
+from sim.perception.carry import near_edge, side_extent, wall_to_side
+
+# (along m, away m, turned deg) from square at grip depth
+POSES = [(0.0, 0.0, 0.0), (0.1, 0.02, 7.0), (-0.1, -0.01, -7.0), (0.05, 0.03, 15.0)]
+
+
+@pytest.fixture(params=POSES, ids=lambda p: f"along{p[0]}_away{p[1]}_yaw{p[2]}")
+def scene(request: pytest.FixtureRequest) -> Iterator[tuple[World, tuple[float, float, float]]]:
+    offset = request.param
+    with World(scenario_from_dict(at_table(offset, None)), 0) as world:
+        yield world, offset
+
+
+def look(world: World, yaw: float, pitch: float) -> None:
+    world.robots["r1"].set_head(yaw, pitch)
+    world.advance(1.0)
+
+
+def test_near_edge_distance_and_turn(scene: tuple[World, tuple[float, float, float]]) -> None:
+    world, (_, away, turned) = scene
+    look(world, 0.0, 0.5)
+    robot = world.robots["r1"]
+    edge = near_edge(robot.image("down"), robot.camera_model("down"))
+    assert edge.found
+    assert edge.distance == pytest.approx((GRIP_Y + away - 0.25) * math.cos(math.radians(turned)), abs=0.01)
+    assert math.degrees(edge.turn) == pytest.approx(-turned, abs=1.5)
+
+
+def test_side_extents_tell_the_longer_side(scene: tuple[World, tuple[float, float, float]]) -> None:
+    world, (along, _, _) = scene
+    robot = world.robots["r1"]
+    look(world, 0.0, 0.5)
+    turn = near_edge(robot.image("down"), robot.camera_model("down")).turn
+    reach = {}
+    for side, yaw in (("left", 1.3), ("right", -1.3)):
+        look(world, yaw, 0.45)
+        reach[side] = side_extent(robot.image("forward"), robot.camera_model("forward"), side, turn)
+    # r1 faces +y: its left is -x, so standing `along` +x leaves more table on its left
+    assert reach["left"].lateral == pytest.approx(0.4 + along, abs=0.02)
+    assert reach["right"].lateral == pytest.approx(0.4 - along, abs=0.02)
+
+
+@pytest.mark.parametrize("table_x", [0.0, TABLE_X, 1.9])
+def test_wall_to_the_right(table_x: float) -> None:
+    with World(scenario_from_dict(at_table((0.0, 0.0, 0.0), None, table_x=table_x)), 0) as world:
+        look(world, -2.0, 0.5)
+        robot = world.robots["r1"]
+        seen = wall_to_side(robot.image("forward"), robot.camera_model("forward"), "right")
+        assert seen.found
+        assert seen.distance == pytest.approx(2.5 - table_x, abs=0.03)
+
+
+def test_no_table_no_edge() -> None:
+    scenario = {"room": {"width": 5.0, "depth": 5.0}, "robots": {"r1": {"x": 0.0, "y": -2.0, "yaw": -90.0}}}
+    with World(scenario_from_dict(scenario), 0) as world:
+        look(world, 0.0, 0.5)
+        robot = world.robots["r1"]
+        assert not near_edge(robot.image("down"), robot.camera_model("down")).found
