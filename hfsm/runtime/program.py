@@ -96,7 +96,7 @@ class Program:
             return None
         if isinstance(timer, str):
             return compile_expr(timer.strip()[2:-1], names)
-        return span_ticks(timer, self.dt)
+        return max(1, span_ticks(timer, self.dt))  # a timer fires in a later tick than it began
 
     def _compile(self, rm: RMachine, m: Machine) -> None:
         rm.var_init = dict(m.vars)
