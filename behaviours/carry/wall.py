@@ -1,0 +1,61 @@
+"""Which way to carry, and whether the table is at the wall (the leader's looks; Figure 6)."""
+
+from __future__ import annotations
+
+import math
+
+from behaviours.body import Body
+from behaviours.carry.sensing import edge, extent, wall
+from hfsm.primitive import Context, Outcome, primitive
+
+
+@primitive(outcomes=["chosen", "failure"], outputs=["direction", "distance"], world="sim")
+def choose_carry_direction(
+    ctx: Context, *, look_yaw: float = 2.0, look_pitch: float = 0.5
+) -> str | Outcome:
+    """Look left and right along the table's long axis and choose the side whose wall is
+    nearer (a tie goes left). Outputs `direction` ('left'/'right', in this robot's frame)
+    and `distance` (m) to that wall. `failure` when no wall is seen on either side."""
+    body = Body(ctx)
+    seen = {side: wall(body, side, look_yaw, look_pitch) for side in ("left", "right")}
+    body.look(0.0, 0.0)
+    found = {side: w.distance for side, w in seen.items() if w.found}
+    if not found:
+        return "failure"
+    side = min(found, key=lambda s: (found[s], s != "left"))
+    return Outcome("chosen", direction=side, distance=round(found[side], 3))
+
+
+@primitive(outcomes=["reached", "not_reached", "failure"], outputs=["steps", "gap"],
+           world="sim")
+def table_at_wall(
+    ctx: Context,
+    *,
+    direction: str,
+    wall_gap: float = 0.05,
+    steps: int = 10,
+    step: float = 0.05,
+    wall_yaw: float = 2.0,
+    wall_pitch: float = 0.5,
+    table_yaw: float = 1.3,
+    table_pitch: float = 0.45,
+    edge_pitch: float = 0.5,
+) -> str | Outcome:
+    """Figure 6, on the floor: look down at the near edge (its angle), toward `direction` for
+    the wall's foot and along the table for its far end; the gap is the wall's distance
+    minus the table's reach to that side.
+    `reached` when the gap is at most `wall_gap` m; else `not_reached` with `steps`: how many
+    steps of `step` m to take this cycle (at most `steps`, never more than the gap holds, at
+    least 1). `failure` when the wall or the table is not seen."""
+    body = Body(ctx)
+    near = edge(body, edge_pitch)
+    seen_wall = wall(body, direction, wall_yaw, wall_pitch)
+    reach = extent(body, direction, table_yaw, table_pitch, near.turn if near.found else 0.0)
+    body.look(0.0, 0.0)
+    if not (seen_wall.found and reach.found):
+        return "failure"
+    gap = seen_wall.distance - reach.lateral
+    if gap <= wall_gap:
+        return Outcome("reached", steps=0, gap=round(gap, 3))
+    count = max(1, min(steps, math.floor(gap / step)))
+    return Outcome("not_reached", steps=count, gap=round(gap, 3))
