@@ -35,8 +35,16 @@ class SimWorld:
     name = "sim"
     static = False
 
-    def __init__(self, world: World, *, progress_every: float = 0.0, outputs: Sequence[Path] = ()) -> None:
+    def __init__(
+        self,
+        world: World,
+        *,
+        progress_every: float = 0.0,
+        outputs: Sequence[Path] = (),
+        default_trace: Path | None = None,
+    ) -> None:
         self.world = world
+        self.default_trace = default_trace
         self.dt = 0.05
         self.progress_every = progress_every
         self._outputs = list(outputs)

@@ -28,16 +28,29 @@ class SimWorldFactory:
             metavar="NAME|FILE",
             help=f"a shipped scenario or a scenario file (default {DEFAULT_SCENARIO})",
         )
-        group.add_argument("--video", type=Path, metavar="FILE", help="top-down video (.mp4 or .gif)")
+        group.add_argument(
+            "--out",
+            type=Path,
+            default=Path("out"),
+            metavar="DIR",
+            help="where the trace, video and final picture go by default (default out/)",
+        )
+        group.add_argument(
+            "--video",
+            type=Path,
+            metavar="FILE",
+            help="top-down video, .mp4 or .gif (default DIR/SCENARIO-seedN.mp4)",
+        )
+        group.add_argument("--no-video", action="store_true", help="no video and no final picture")
         group.add_argument("--image-size", default="160x120", metavar="WxH", help="camera images")
         group.add_argument("--radio-latency", type=float, default=0.1, metavar="S")
         group.add_argument("--radio-loss", type=float, default=0.0, metavar="P")
         group.add_argument(
             "--progress",
             type=float,
-            default=0.0,
+            default=60.0,
             metavar="S",
-            help="print the simulated time every S seconds",
+            help="print the simulated time every S seconds (0: never; default 60)",
         )
 
     def create(self, args: argparse.Namespace, seed: int) -> SimWorld:
@@ -45,16 +58,16 @@ class SimWorldFactory:
         from sim import World
         from sim.recorder import Recorder
 
-        scenario, _ = load_scenario(args.scenario)
+        scenario, name = load_scenario(args.scenario)
         size = _image_size(args.image_size)
-        recorder = None
-        outputs: list[Path] = []
-        if args.video:
-            args.video.parent.mkdir(parents=True, exist_ok=True)
-            recorder = Recorder(args.video)
-            outputs = [args.video, args.video.with_suffix(".png")]
         if not 0 <= args.radio_loss <= 1 or args.radio_latency < 0:
             raise UsageError("--radio-loss takes 0..1 and --radio-latency a number >= 0")
+        stem = args.out / f"{name}-seed{seed}"
+        video = None if args.no_video else args.video or stem.with_suffix(".mp4")
+        recorder = None
+        if video is not None:
+            video.parent.mkdir(parents=True, exist_ok=True)
+            recorder = Recorder(video)
         world = World(
             scenario,
             seed,
@@ -63,7 +76,9 @@ class SimWorldFactory:
             radio_loss=args.radio_loss,
             recorder=recorder,
         )
-        return SimWorld(world, progress_every=args.progress, outputs=outputs)
+        outputs = [video, video.with_suffix(".png")] if video else []
+        trace = stem.with_suffix(".jsonl")
+        return SimWorld(world, progress_every=args.progress, outputs=outputs, default_trace=trace)
 
 
 def _image_size(text: str) -> tuple[int, int]:

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 from collections.abc import Sequence
+from pathlib import Path
 from typing import Any, Protocol
 
 from hfsm.primitive import Message
@@ -20,6 +21,7 @@ class World(Protocol):
 
     name: str
     static: bool  # True: nothing changes between events, so idle ticks may be skipped
+    default_trace: Path | None  # where the trace goes when --trace is not given (None: nowhere)
 
     def agent_names(self) -> Sequence[str] | None:
         """The agents this world has (e.g. a scenario's robots), or None to let the run choose."""
@@ -81,6 +83,7 @@ class NullWorld(PerfectRadio):
 
     name = "none"
     static = True
+    default_trace: Path | None = None
 
     def agent_names(self) -> Sequence[str] | None:
         return None

@@ -144,7 +144,10 @@ def _run(
     top = loaded.roots[0]
     options = RunOptions(top.name, _agents(args, world), params, args.seed, args.max_time)
     program = Program(loaded.machines, registry, args.dt)
-    trace = JsonlTrace(args.trace) if args.trace else None
+    trace_path = args.trace or world.default_trace
+    if trace_path:
+        trace_path.parent.mkdir(parents=True, exist_ok=True)
+    trace = JsonlTrace(trace_path) if trace_path else None
     try:
         result = run(program, world, options, trace)
     finally:
@@ -161,8 +164,8 @@ def _run(
         print(f"error: {result.error}", file=sys.stderr)
         if args.traceback and result.traceback:
             print(result.traceback, file=sys.stderr, end="")
-    if args.trace:
-        print(f"trace: {args.trace}", file=sys.stderr)
+    if trace_path:
+        print(f"wrote {trace_path}", file=sys.stderr)
     return result.exit_code
 
 
