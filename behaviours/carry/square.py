@@ -15,7 +15,7 @@ def recentre_to_middle_of_table(
     *,
     grip_distance: float = 0.09,
     distance_tolerance: float = 0.02,
-    angle_tolerance: float = 5.0,
+    angle_tolerance: float = 2.0,
     pitch: float = 0.5,
     tries: int = 4,
 ) -> str:
