@@ -18,7 +18,7 @@ from hfsm.trace import ListTrace
 from sim import World, load_scenario, scenario_from_dict
 from sim.profile import DEFAULT_BODY
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "tests" / "behaviours" / "data" / "carry"
 TABLE_X = 0.6
 GRIP_Y = 0.25 + DEFAULT_BODY.hand_x - 0.08  # hands 8 cm under the 0.5 m wide table's edge
