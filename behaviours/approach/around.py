@@ -6,8 +6,23 @@ from __future__ import annotations
 import math
 
 from behaviours.approach.frames import Point, Side, from_table_frame, nearest_side, sides, table_frame
-from behaviours.approach.navigate import Look, Tolerance, align_to_side, look_at_table, walk_to
-from behaviours.approach.sight import RobotSighting, own_colour, scan_for_robot, see_table
+from behaviours.approach.navigate import (
+    Look,
+    Tolerance,
+    agrees,
+    align_to_side,
+    look_at_table,
+    refresh,
+    walk_to,
+)
+from behaviours.approach.sight import (
+    RobotSighting,
+    leader_behind_table,
+    own_colour,
+    scan_for_robot,
+    see_robot,
+    see_table,
+)
 from behaviours.body import Body
 from hfsm.primitive import Context, Outcome, primitive
 from sim.perception.table_rect import TableRect
@@ -50,31 +65,68 @@ def opposite_side(rect: TableRect, leader: RobotSighting, robot: Point) -> Side:
     return next(s for s in sides(rect)[:2] if s != across)
 
 
-@primitive(outcomes=["at_opposite_side", "not_aligned", "lost"], failures=["not_aligned", "lost"],
+def good_view(rect: TableRect, known: TableRect, look: Look, min_points: int) -> bool:
+    """Whole enough to plan on: the leader's measure of the table, or enough outline."""
+    if known.length > 0:
+        return agrees(rect, known, look.size_tolerance)
+    return rect.found and rect.points >= min_points
+
+
+def clear_view(body: Body, look: Look, known: TableRect, own: int, step: float,
+               views: int, min_points: int, in_line: float) -> TableRect:
+    """The table top, moving for a better view while too little of it shows (far away, or
+    hidden behind the leader): closer if the leader is not in the line of sight, else
+    sideways away from it."""
+    rect = look_at_table(body, None, look)
+    for _ in range(views):
+        if good_view(rect, known, look, min_points):
+            break
+        table = see_table(body, 0.0, look.pitch)
+        leader = see_robot(body, 0.0, look.pitch, own)
+        blocked = leader.found and abs(leader.bearing) < in_line
+        if table is not None and not blocked and table.distance > 2 * step:
+            body.walk(step)
+        else:
+            body.crab(-math.copysign(step, leader.bearing if leader.found else -1.0))
+        face_table(body, look.pitch)
+        rect = look_at_table(body, None, look)
+    return rect
+
+
+@primitive(outcomes=["at_opposite_side", "not_aligned", "leader_not_across", "lost"],
+           failures=["not_aligned", "leader_not_across", "lost"],
            outputs=["leader_seen"], world="sim")
 def go_to_opposite_side_of_table(
         ctx: Context, *, gap: float = 0.35, margin: float = 0.5, pitch: float = 0.3,
         spread: float = 0.7, along_tolerance: float = 0.03, out_tolerance: float = 0.03,
-        yaw_tolerance: float = 0.05, tries: int = 4, legs: int = 4) -> Outcome:
+        yaw_tolerance: float = 0.05, tries: int = 4, legs: int = 4, length: float = 0.0,
+        width: float = 0.0, step: float = 0.5, views: int = 6, min_points: int = 60,
+        in_line: float = 0.35) -> Outcome:
     """Face the table, see where the leader stands, walk round the table (`margin` m clear
-    of its corners) to the other long side and square up `gap` m out from its middle."""
+    of its corners) to the other long side and square up `gap` m out from its middle; check
+    that the leader now stands behind the table (its blob above the table's). `length` and
+    `width`: the table as the leader measured it (0: unknown), to tell a whole view."""
     body = Body(ctx)
     look = Look(pitch=pitch, spread=spread)
     if not face_table(body, pitch):
         return Outcome("lost")
-    rect = look_at_table(body, None, look)
+    own = own_colour(body)
+    known = TableRect(True, length=length, width=width)
+    rect = clear_view(body, look, known, own, step, views, min_points, in_line)
     if not rect.found:
         return Outcome("lost")
-    leader = scan_for_robot(body, [0.0, 0.6, -0.6, 1.2, -1.2], pitch, own_colour(body))
+    leader = scan_for_robot(body, [0.0, 0.6, -0.6, 1.2, -1.2], pitch, own)
     target = opposite_side(rect, leader, body.odometry()[:2])
     for _ in range(legs):
         points = route(rect, body.odometry()[:2], target, margin, gap)
         walk_to(body, points[0])
         if len(points) == 1:
             break
-        fresh = look_at_table(body, rect, look)
-        if fresh.found:
-            rect, target = fresh, nearest_side(fresh, target.middle)
+        rect = refresh(body, rect, look, known if known.length > 0 else None)
+        target = nearest_side(rect, target.middle)
     tol = Tolerance(along_tolerance, out_tolerance, yaw_tolerance)
-    rect, _, ok = align_to_side(body, rect, target.middle, gap, look, tol, tries)
+    rect, _, ok = align_to_side(body, rect, target.middle, gap, look, tol, tries,
+                                known if known.length > 0 else None)
+    if not leader_behind_table(body, pitch, own):
+        return Outcome("leader_not_across", leader_seen=leader.found)
     return Outcome("at_opposite_side" if ok else "not_aligned", leader_seen=leader.found)

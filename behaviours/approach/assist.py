@@ -5,11 +5,9 @@ from __future__ import annotations
 import math
 
 from behaviours.approach.frames import bearing_to, body_to_odom
-from behaviours.approach.navigate import unit
-from behaviours.approach.sight import own_colour, scan_for_robot, see_table
+from behaviours.approach.sight import leader_behind_table, own_colour, scan_for_robot, see_table
 from behaviours.body import Body
 from hfsm.primitive import Context, Outcome, primitive
-from sim.perception import find_robots, find_table, is_below
 
 LEADER_YAWS = [0.0, 0.9, -0.9, 1.8, -1.8]
 
@@ -28,30 +26,21 @@ def look_for_leader(ctx: Context, *, pitch: float = 0.3) -> Outcome:
 
 @primitive(outcomes=["cleared"], outputs=["moved"], world="sim")
 def clear_way(ctx: Context, *, leader_bearing: float = 0.0, leader_distance: float = -1.0,
-              distance: float = 0.5, pitch: float = 0.3) -> Outcome:
+              distance: float = 0.6, sideways: float = 1.0, pitch: float = 0.3) -> Outcome:
     """Move out of the leader's way: unless the leader stands behind the table (the table's
-    blob below the leader's), walk `distance` metres away from both the table (ahead) and
-    the leader (`leader_distance` < 0: not seen), then face the table again."""
+    blob below the leader's), walk `distance` metres away from the table (ahead), turned
+    `sideways` rad from straight back towards the side away from the leader
+    (`leader_distance` < 0: not seen, straight back); then face the table again."""
     body = Body(ctx)
     table = see_table(body, 0.0, pitch)
-    if table is not None and leader_distance >= 0 and leader_behind_table(body, pitch):
+    if table is not None and leader_distance >= 0 and leader_behind_table(body, pitch, own_colour(body)):
         return Outcome("cleared", moved=0.0)
     pose = body.odometry()
     table_point = body_to_odom(pose, (table.distance if table else 1.0, 0.0))
-    ax, ay = 1.0, 0.0
+    heading = math.pi
     if leader_distance >= 0:
-        ax, ay = ax + math.cos(leader_bearing), ay + math.sin(leader_bearing)
-    away = unit(-ax, -ay)
-    body.turn(math.atan2(away[1], away[0]))
+        heading = -math.copysign(math.pi - sideways, leader_bearing)
+    body.turn(heading)
     body.walk(distance)
     body.turn(bearing_to(body.odometry(), table_point))
     return Outcome("cleared", moved=distance)
-
-
-def leader_behind_table(body: Body, pitch: float) -> bool:
-    """Section 3.5: the leader stands behind the table if the table blob is below its blob."""
-    own = own_colour(body)
-    body.look(0.0, pitch)
-    image = body.image("forward")
-    table = find_table(image)
-    return any(is_below(table, b) for i, b in enumerate(find_robots(image)) if i != own)

@@ -1,35 +1,58 @@
 """Go to table (section 3.4, Figure 5): walk to the nearest corner of the table.
 
-The nearest corner stands on the nearest leg, whose foot is the table blob's lowest pixel.
-The robot turns until that pixel is in the central band of the image, walks while it stays
-there, and stops before the table when the lowest pixel passes `near` of the image height.
+The robot picks the nearest corner of the table top it sees and keeps to that corner (in its
+odometry frame, so two equally near corners do not make it dither). It turns until the corner
+is in the central band of the image, walks while it stays there, and stops before the table
+when the table's lowest pixel passes `near` of the image height.
 """
 
 from __future__ import annotations
 
+import math
+
+from behaviours.approach.frames import Point, bearing_to, body_to_odom, distance
 from behaviours.body import Body
 from hfsm.primitive import Context, Outcome, primitive
-from sim.perception import find_table, pixel_bearing
+from sim.perception import Blob, find_table, pixel_bearing
+from sim.perception.table_rect import table_rect
+
+
+def corner_in_view(body: Body, held: Point | None) -> Point | None:
+    """The top's corner (odometry frame) nearest to the held one, or to the robot."""
+    rect = table_rect(body.image("forward"), body.camera("forward"))
+    if not rect.found:
+        return None
+    pose = body.odometry()
+    corners = [body_to_odom(pose, c) for c in rect.corners()]
+    return min(corners, key=lambda c: distance(c, held if held else pose[:2]))
+
+
+def steer_bearing(body: Body, blob: Blob, corner: Point | None) -> float:
+    if corner is not None:
+        return bearing_to(body.odometry(), corner)
+    camera = body.camera("forward")
+    return pixel_bearing(camera, blob.lowest_u, blob.lowest_row + 1.0)
 
 
 @primitive(outcomes=["at_corner", "lost"], failures=["lost"], outputs=["bearing"], world="sim")
-def go_to_table(ctx: Context, *, margin: float = 0.2, near: float = 0.8, pitch: float = 0.5,
+def go_to_table(ctx: Context, *, margin: float = 0.2, near: float = 0.8, pitch: float = 0.3,
                 period: float = 0.25, gain: float = 1.0) -> Outcome:
     """Walk to the nearest corner, keeping it within `margin` of the image centre; stop when
     the table's lowest pixel is more than `near` down the image. `lost`: no table in view."""
     body = Body(ctx)
     body.look(0.0, pitch)
+    corner: Point | None = None
     try:
         while True:
             blob = find_table(body.image("forward"))
             if not blob.found:
                 return Outcome("lost")
-            camera = body.camera("forward")
-            bearing = pixel_bearing(camera, blob.lowest_u, blob.lowest_row + 1.0)
-            if blob.lowest_row + 1 > near * camera.height:
+            corner = corner_in_view(body, corner) or corner
+            bearing = steer_bearing(body, blob, corner)
+            if blob.lowest_row + 1 > near * body.camera().height:
                 return Outcome("at_corner", bearing=bearing)
-            centred = abs(blob.lowest_u - camera.cx) <= margin * camera.width / 2
-            forward = body.motion.forward_max if centred else 0.0
+            half_band = math.atan(margin * body.camera().width / 2 / body.camera().fx)
+            forward = body.motion.forward_max if abs(bearing) <= half_band else 0.0
             ctx.robot.set_velocity(forward, 0.0, gain * bearing)
             ctx.wait(period)
     finally:

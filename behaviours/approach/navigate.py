@@ -20,6 +20,7 @@ class Look:
     spread: float = 0.7
     views: int = 3
     value_ratio: float = 0.9
+    size_tolerance: float = 0.1
 
 
 @dataclass(frozen=True)
@@ -45,6 +46,20 @@ def look_at_table(body: Body, rect: TableRect | None, look: Look) -> TableRect:
     return observe_table(body, centre, look.spread, look.pitch, look.value_ratio, look.views)
 
 
+def agrees(fresh: TableRect, ref: TableRect, size_tolerance: float) -> bool:
+    """A fresh sighting is trusted when its sides measure as the reference's did: a partial
+    or occluded view gives a smaller or turned rectangle."""
+    return (fresh.found and abs(fresh.length - ref.length) <= size_tolerance
+            and abs(fresh.width - ref.width) <= size_tolerance)
+
+
+def refresh(body: Body, rect: TableRect, look: Look, known: TableRect | None = None) -> TableRect:
+    """Look again; keep the old rectangle if the new one does not measure as the `known`
+    table (default: the old rectangle)."""
+    fresh = look_at_table(body, rect, look)
+    return fresh if agrees(fresh, known or rect, look.size_tolerance) else rect
+
+
 def square_up(body: Body, side: Side, gap: float) -> None:
     """Face the table across `side`, then walk and crab to `gap` out from its middle."""
     turn_to(body, side.facing())
@@ -66,15 +81,14 @@ def within(errs: tuple[float, float, float], tol: Tolerance) -> bool:
 
 
 def align_to_side(body: Body, rect: TableRect, near: Point, gap: float, look: Look,
-                  tol: Tolerance, tries: int) -> tuple[TableRect, Side, bool]:
+                  tol: Tolerance, tries: int, known: TableRect | None = None
+                  ) -> tuple[TableRect, Side, bool]:
     """Look, then square up on the long side nearest to `near`, until within tolerance.
     Returns the last rectangle, the side and whether the tolerance was met."""
     side = nearest_side(rect, near)
     for _ in range(tries):
-        fresh = look_at_table(body, rect, look)
-        if fresh.found and fresh.width > 0.0:
-            rect = fresh
-            side = nearest_side(rect, side.middle)
+        rect = refresh(body, rect, look, known)
+        side = nearest_side(rect, side.middle)
         if within(errors(body, side, gap), tol):
             return rect, side, True
         square_up(body, side, gap)

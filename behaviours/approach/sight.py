@@ -10,7 +10,7 @@ import numpy as np
 
 from behaviours.approach.frames import Point, body_to_odom
 from behaviours.body import Body
-from sim.perception import Blob, blob_ground, find_robots, find_table, pixel_bearing
+from sim.perception import Blob, blob_ground, find_robots, find_table, is_below, pixel_bearing
 from sim.perception.table_rect import NO_RECT, TableRect, fit_rect, outline_points
 
 HEAD_YAW_LIMIT = 2.0  # rad; within the NAO's +-119.5 deg
@@ -111,3 +111,12 @@ def scan_for_robot(body: Body, yaws: Sequence[float], pitch: float, own: int) ->
         if seen.found:
             return seen
     return NO_ROBOT
+
+
+def leader_behind_table(body: Body, pitch: float, own: int) -> bool:
+    """Section 3.5: the other robot stands behind the table if the table's blob is below its
+    blob (looking straight ahead)."""
+    body.look(0.0, pitch)
+    image = body.image("forward")
+    table = find_table(image)
+    return any(is_below(table, b) for i, b in enumerate(find_robots(image)) if i != own)

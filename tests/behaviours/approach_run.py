@@ -4,13 +4,14 @@ from the simulator's ground truth (tests may read it; behaviours never do)."""
 from __future__ import annotations
 
 import math
+import shutil
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from behaviours.simworld import SimWorld
 from hfsm.load import load
-from hfsm.primitive import Context, Outcome, primitive
+from hfsm.primitive import Context, primitive
 from hfsm.registry import Registry
 from hfsm.runtime.program import Program
 from hfsm.runtime.run import RunOptions, RunResult, run
@@ -65,6 +66,15 @@ def registry() -> Registry:
     reg = Registry.discover()
     reg.add(lift_check)
     return reg
+
+
+def approach_library(folder: Path, stub: Path = DATA / "move_table.yaml") -> Path:
+    """A copy of machines/ in `folder` with `stub` as move_table: the approach runs alone."""
+    for path in sorted((ROOT / "machines").glob("*.yaml")):
+        if path.name != "move_table.yaml":
+            shutil.copy(path, folder / path.name)
+    shutil.copy(stub, folder / "move_table.yaml")
+    return folder / "move_furniture.yaml"
 
 
 def run_machine(top: Path, scenario: str, seed: int, *, extra: list[Path] | None = None,
