@@ -29,3 +29,9 @@ clean:
 figures: $(STAMP)
 	$(BIN)/hfsm-graph machines -o docs/figures --format svg,dot --prune
 	$(BIN)/hfsm-graph examples -o docs/figures/examples --format svg,dot --no-legend --prune
+
+# Engine against its peers (transitions, python-statemachine, sismic, a dict floor): see docs/PERFORMANCE.md.
+.PHONY: bench
+bench: $(STAMP)
+	$(BIN)/python -m pip install --quiet -r tools/bench-requirements.txt
+	$(BIN)/python tools/bench_engine.py
