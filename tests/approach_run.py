@@ -19,8 +19,8 @@ from hfsm.trace import ListTrace
 from sim import World, load_scenario
 from sim.profile import DEFAULT_BODY
 
-ROOT = Path(__file__).resolve().parents[2]
-DATA = Path(__file__).resolve().parent / "data"
+ROOT = Path(__file__).resolve().parents[1]
+DATA = ROOT / "tests" / "behaviours" / "data"
 
 
 @dataclass(frozen=True)
@@ -49,6 +49,24 @@ def placement(world: World, name: str) -> Placement:
     facing = math.atan2(-side, 0.0)
     off = (yaw - tyaw - facing + math.pi) % (2 * math.pi) - math.pi
     return Placement(lx, depth, off, side)
+
+
+def distances(world: World) -> dict[str, float]:
+    """Centre to centre: each robot to the table (`r1_table`) and to each other (`r1_r2`)."""
+    truth = world.truth
+    tx, ty = truth.table_pose()[:2]
+    poses = {n: truth.robot_pose(n) for n in world.robots}
+    out = {f"{n}_table": math.hypot(p[0] - tx, p[1] - ty) for n, p in poses.items()}
+    for a, pa in poses.items():
+        for b, pb in poses.items():
+            if a != b:
+                out[f"{a}_{b}"] = math.hypot(pa[0] - pb[0], pa[1] - pb[1])
+    return out
+
+
+def corner_distance(world: World, name: str) -> float:
+    x, y, _ = world.truth.robot_pose(name)
+    return min(math.hypot(c[0] - x, c[1] - y) for c in world.truth.table_corners())
 
 
 @primitive(outcomes=["held", "not_held"], world="sim")
@@ -88,12 +106,14 @@ def run_machine(top: Path, scenario: str, seed: int, *, extra: list[Path] | None
     full.update(params or {})
     world = World(load_scenario(scenario), seed)
     try:
+        start = distances(world)
         program = Program(loaded.machines, reg, 0.05)
         trace = ListTrace()
         options = RunOptions(root.name, list(world.robots), full, seed, max_time)
         result = run(program, SimWorld(world), options, trace)
-        judged = {"score": world.score(),
-                  "placements": {n: placement(world, n) for n in world.robots}}
+        judged = {"score": world.score(), "start": start, "end": distances(world),
+                  "placements": {n: placement(world, n) for n in world.robots},
+                  "corner_distance": {n: corner_distance(world, n) for n in world.robots}}
     finally:
         world.close()
     return result, trace.records, judged
