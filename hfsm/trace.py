@@ -10,6 +10,9 @@ from typing import IO, Any, Protocol
 class TraceSink(Protocol):
     def write(self, record: dict[str, Any]) -> None: ...
 
+    def flush(self) -> None:
+        """Called at the end of every tick that wrote something."""
+
     def close(self) -> None: ...
 
 
@@ -22,19 +25,26 @@ class ListTrace:
     def write(self, record: dict[str, Any]) -> None:
         self.records.append(record)
 
+    def flush(self) -> None:
+        pass
+
     def close(self) -> None:
         pass
 
 
 class JsonlTrace:
-    """One JSON object a line, line-buffered, so a crash leaves every line written so far readable."""
+    """One JSON object a line, flushed at the end of every tick: a crash leaves whole lines up to it."""
 
     def __init__(self, path: Path) -> None:
         self.path = path
-        self._file: IO[str] = path.open("w", encoding="utf-8", buffering=1)
+        self._file: IO[str] = path.open("w", encoding="utf-8")
+        self._encode = json.JSONEncoder(ensure_ascii=False, allow_nan=False, default=str).encode
 
     def write(self, record: dict[str, Any]) -> None:
-        self._file.write(json.dumps(record, ensure_ascii=False, allow_nan=False, default=str) + "\n")
+        self._file.write(self._encode(record) + "\n")
+
+    def flush(self) -> None:
+        self._file.flush()
 
     def close(self) -> None:
         self._file.close()

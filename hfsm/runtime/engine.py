@@ -39,12 +39,18 @@ class Engine:
         self.dt = dt
         self.trace = trace
         self.tick = 0
+        self._time = (0, 0.0)  # (tick, seconds) of the last time asked for
         self.running = len(agents)  # agents whose top machine has not ended
         self.spans: dict[float, int] = {}  # seconds -> ticks, for spans seen before
 
     @property
     def time(self) -> float:
-        return round(self.tick * self.dt, 9)
+        """Seconds at this tick, k * dt rounded: traces print 0.15, not 0.15000000000000002."""
+        tick, seconds = self._time
+        if tick != self.tick:
+            seconds = round(self.tick * self.dt, 9)
+            self._time = (self.tick, seconds)
+        return seconds
 
     def emit(self, agent: Agent, path: list[str], kind: str, **extra: Any) -> None:
         if self.trace is not None:

@@ -72,6 +72,8 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
                 if agent.result is None:
                     agent.entries = 0
                     engine.step(agent)
+            if engine.trace is not None:
+                engine.trace.flush()
     except FatalError as exc:
         return exc.args[0], exc.traceback
     return None, ""
