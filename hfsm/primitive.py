@@ -92,20 +92,25 @@ class Primitive:
 def primitive(
     *,
     outcomes: Iterable[str],
-    failures: Iterable[str] = (),
+    failures: Iterable[str] | None = None,
     outputs: Iterable[str] = (),
     name: str | None = None,
     world: str | None = None,
 ) -> Callable[[PrimitiveFn], Primitive]:
-    """Declare a primitive from a function `fn(ctx, *, param: type = default, ...)`."""
+    """Declare a primitive from a function `fn(ctx, *, param: type = default, ...)`.
+
+    `failures` defaults, as for machines, to the outcomes named `failure` or `timeout`.
+    """
+    declared = tuple(outcomes)
+    failed = frozenset(o for o in declared if o in ("failure", "timeout")) if failures is None else failures
 
     def wrap(fn: PrimitiveFn) -> Primitive:
         spec = BehaviourSpec(
             name=name or fn.__name__,
             kind="primitive",
             params=_params_of(fn),
-            outcomes=tuple(outcomes),
-            failures=frozenset(failures),
+            outcomes=declared,
+            failures=frozenset(failed),
             outputs=frozenset(outputs),
             doc=inspect.cleandoc(fn.__doc__ or "").split("\n\n")[0],
             world=world,
