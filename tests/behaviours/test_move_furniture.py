@@ -1,0 +1,30 @@
+"""The main job, end to end: two robots move the table to a wall, through `hfsm-run` itself."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from hfsm.cli.run import main
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+@pytest.mark.slow
+def test_two_robots_move_the_table_to_a_wall(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    code = main([str(ROOT / "machines" / "move_furniture.yaml"), "--json", "--out", str(tmp_path), "--quiet"])
+    out, err = capsys.readouterr()
+    result = json.loads(out)
+    assert code == 0, err
+    assert {a: r["outcome"] for a, r in result["agents"].items()} == {"r1": "at_wall", "r2": "at_wall"}
+    assert sorted(r["outputs"]["role"] for r in result["agents"].values()) == ["assistant", "leader"]
+    score = result["score"]
+    assert score["success"] and not score["dropped"] and score["robot_collisions"] == 0
+    assert score["table_wall_distance"] <= 0.15
+    assert score["time"] < 12 * 60, "no slower than the paper's no-wait time"
+    written = sorted(p.name for p in tmp_path.iterdir())
+    assert written == ["opposite_long_side-seed0.jsonl", "opposite_long_side-seed0.mp4", "opposite_long_side-seed0.png"]
+    records = [json.loads(line) for line in (tmp_path / "opposite_long_side-seed0.jsonl").read_text().splitlines()]
+    assert records[-1]["kind"] == "exit" and records[-1]["path"] == ["move_furniture"]
