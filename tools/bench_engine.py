@@ -33,9 +33,9 @@ if str(TOOLS) not in sys.path:
 
 from bench import report as rep  # noqa: E402
 from bench.worker import Settings, run_worker  # noqa: E402
+from docsection import write_section  # noqa: E402
 
 DOC = ROOT / "docs" / "PERFORMANCE.md"
-START, END = "<!-- bench_engine:start -->", "<!-- bench_engine:end -->"
 LIBS = ["hfsm", "floor", "transitions", "python-statemachine", "sismic"]
 QUICK = Settings(repeats=3, budget=0.05, w1=20_000, w2=5_000, laps=4, trace_w1=5_000, trace_w2=1_000)
 WORKER_TIMEOUT = 600
@@ -184,18 +184,6 @@ def _command(args: argparse.Namespace) -> str:
     return " ".join(words)
 
 
-def update_doc(body: str, doc: Path = DOC) -> None:
-    """Replace the bench_engine section of `doc` (append it when missing); leave the rest as it is."""
-    text = doc.read_text(encoding="utf-8") if doc.exists() else ""
-    block = f"{START}\n{body}\n{END}"
-    if START in text and END in text:
-        head, rest = text.split(START, 1)
-        text = head + block + rest.split(END, 1)[1]
-    else:
-        text = text.rstrip("\n") + ("\n\n" if text else "") + block + "\n"
-    doc.write_text(text, encoding="utf-8")
-
-
 def main(argv: list[str] | None = None) -> int:
     args = parse_args(argv)
     if args.worker:
@@ -217,7 +205,7 @@ def main(argv: list[str] | None = None) -> int:
     body = section(pooled, settings, command, rounds, time.perf_counter() - begin)
     print(body)
     if not (args.quick or args.no_doc):
-        update_doc(body)
+        write_section(DOC, "bench_engine", [body])
     return 1 if any(p.errors for p in pooled.values()) else 0
 
 

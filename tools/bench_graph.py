@@ -19,8 +19,10 @@ from pathlib import Path
 
 from hfsm.cli.graph import build_parser, draw, machine_files
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from docsection import write_section
+
 ROOT = Path(__file__).resolve().parent.parent
-START, END = "<!-- bench_graph:start -->", "<!-- bench_graph:end -->"
 TARGET_S = 2.0
 FOLDERS = ("machines", "examples", "tests/diagram/data")
 
@@ -62,17 +64,6 @@ def rows(repeats: int) -> list[tuple[str, int, str, float]]:
     return out
 
 
-def write_doc(path: Path, lines: list[str]) -> None:
-    section = "\n".join([START, *lines, END])
-    text = path.read_text(encoding="utf-8") if path.exists() else ""
-    if START in text and END in text:
-        head, rest = text.split(START, 1)
-        text = head + section + rest.split(END, 1)[1]
-    else:
-        text = (text.rstrip("\n") + "\n\n" if text.strip() else "") + section + "\n"
-    path.write_text(text, encoding="utf-8")
-
-
 def main() -> None:
     parser = argparse.ArgumentParser(description=(__doc__ or "").splitlines()[0])
     parser.add_argument("--repeats", type=int, default=5, help="runs per row; the median is kept")
@@ -98,7 +89,7 @@ def main() -> None:
     lines += ["", f"- {verdict}"]
     print("\n".join(lines))
     if not args.no_doc:
-        write_doc(ROOT / "docs" / "PERFORMANCE.md", lines)
+        write_section(ROOT / "docs" / "PERFORMANCE.md", "bench_graph", lines)
     print(verdict)
 
 

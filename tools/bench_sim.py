@@ -17,13 +17,15 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-if str(ROOT) not in sys.path:
-    sys.path.insert(0, str(ROOT))
+for folder in (ROOT, ROOT / "tools"):
+    if str(folder) not in sys.path:
+        sys.path.insert(0, str(folder))
+
+from docsection import write_section  # noqa: E402
 
 from sim.scenario import load_scenario  # noqa: E402
 from sim.world import World  # noqa: E402
 
-START, END = "<!-- bench_sim:start -->", "<!-- bench_sim:end -->"
 TICK = 0.05
 
 
@@ -76,17 +78,6 @@ def scripted_rtf(seconds: float, image_hz: float) -> tuple[float, int]:
         return seconds / (time.perf_counter() - begin), images
 
 
-def write_doc(path: Path, lines: list[str]) -> None:
-    section = "\n".join([START, *lines, END])
-    text = path.read_text(encoding="utf-8") if path.exists() else ""
-    if START in text and END in text:
-        head, rest = text.split(START, 1)
-        text = head + section + rest.split(END, 1)[1]
-    else:
-        text = (text.rstrip("\n") + "\n\n" if text.strip() else "") + section + "\n"
-    path.write_text(text, encoding="utf-8")
-
-
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=60.0, help="simulated s of the run")
@@ -107,7 +98,7 @@ def main() -> None:
               f"**real-time factor {rtf:.1f}**"]
     print("\n".join(lines))
     if not args.no_doc:
-        write_doc(ROOT / "docs" / "PERFORMANCE.md", lines)
+        write_section(ROOT / "docs" / "PERFORMANCE.md", "bench_sim", lines)
     print(f"real-time factor: {rtf:.1f}")
 
 

@@ -99,7 +99,7 @@ def table_mask(image: np.ndarray, cfg: PerceptionConfig = DEFAULT_CONFIG) -> np.
     return colour_mask(to_hsv(image), cfg.table_colour, cfg)
 
 
-def _clean(mask: np.ndarray, cfg: PerceptionConfig) -> tuple[np.ndarray, int]:
+def clean_mask(mask: np.ndarray, cfg: PerceptionConfig) -> tuple[np.ndarray, int]:
     """Drop components below `min_blob_fraction` of the image; the union of the rest."""
     m = np.asarray(mask, dtype=np.uint8)
     if not cv2.countNonZero(m):
@@ -117,7 +117,7 @@ def _clean(mask: np.ndarray, cfg: PerceptionConfig) -> tuple[np.ndarray, int]:
 
 def blob_from_mask(mask: np.ndarray, cfg: PerceptionConfig = DEFAULT_CONFIG) -> Blob:
     """The union of the mask's components that are not noise, described as a Blob."""
-    clean, count = _clean(mask, cfg)
+    clean, count = clean_mask(mask, cfg)
     m = cv2.moments(clean.astype(np.uint8), binaryImage=True)
     if m["m00"] == 0:
         return NO_BLOB

@@ -22,36 +22,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Protocol
 
 import cv2
 import numpy as np
 
-from sim.perception.blobs import _clean, colour_hue, table_mask, to_hsv
-from sim.perception.config import DEFAULT_CONFIG, PerceptionConfig
-
-
-class PinholeCamera(Protocol):
-    """What these functions need of `sim.CameraModel`."""
-
-    @property
-    def width(self) -> int: ...
-    @property
-    def height(self) -> int: ...
-    @property
-    def cx(self) -> float: ...
-    @property
-    def cy(self) -> float: ...
-    @property
-    def fx(self) -> float: ...
-    @property
-    def fy(self) -> float: ...
-    @property
-    def position(self) -> tuple[float, float, float]: ...
-    @property
-    def rotation(self) -> np.ndarray: ...
-
-    def project(self, point: tuple[float, float, float]) -> tuple[float, float] | None: ...
+from sim.perception.blobs import clean_mask, colour_hue, table_mask, to_hsv
+from sim.perception.config import DEFAULT_CONFIG, Camera, PerceptionConfig
 
 
 @dataclass(frozen=True)
@@ -87,7 +63,7 @@ class WallSeen:
 NO_EDGE, NO_EXTENT, NO_WALL = NearEdge(False), SideExtent(False), WallSeen(False)
 
 
-def on_plane(camera: PinholeCamera, us: np.ndarray, vs: np.ndarray, plane_z: float
+def on_plane(camera: Camera, us: np.ndarray, vs: np.ndarray, plane_z: float
              ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Body-frame (x, y) where the rays through pixel coordinates (us, vs) meet z = plane_z,
     and a mask of the rays that do (downwards to a plane below the camera, or up)."""
@@ -114,10 +90,10 @@ def _first_run_bottoms(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return cols[inside], ends[inside] - 1
 
 
-def near_edge(image: np.ndarray, camera: PinholeCamera,
+def near_edge(image: np.ndarray, camera: Camera,
               cfg: PerceptionConfig = DEFAULT_CONFIG) -> NearEdge:
     """The near long edge seen by the down camera (see the module docstring)."""
-    mask, _ = _clean(table_mask(image, cfg), cfg)
+    mask, _ = clean_mask(table_mask(image, cfg), cfg)
     cols, bottoms = _first_run_bottoms(mask)
     if cols.size < max(3, cfg.min_edge_px_fraction * camera.width):
         return NO_EDGE
@@ -132,11 +108,11 @@ def near_edge(image: np.ndarray, camera: PinholeCamera,
     return NearEdge(True, distance=distance, turn=-math.atan2(dx, dy), points=int(pts.shape[0]))
 
 
-def side_extent(image: np.ndarray, camera: PinholeCamera, side: str, turn: float = 0.0,
+def side_extent(image: np.ndarray, camera: Camera, side: str, turn: float = 0.0,
                 cfg: PerceptionConfig = DEFAULT_CONFIG) -> SideExtent:
     """How far the table top reaches to `side` ('left' or 'right'), measured along the near
     edge: `turn` is that edge's `NearEdge.turn` (0: the edge runs along the body's y axis)."""
-    mask, _ = _clean(table_mask(image, cfg), cfg)
+    mask, _ = clean_mask(table_mask(image, cfg), cfg)
     vs, us = np.nonzero(mask)
     if us.size == 0:
         return NO_EXTENT
@@ -183,7 +159,7 @@ def floor_wall_line(image: np.ndarray, cfg: PerceptionConfig = DEFAULT_CONFIG
     return np.asarray(us), np.asarray(vs)
 
 
-def wall_to_side(image: np.ndarray, camera: PinholeCamera, side: str,
+def wall_to_side(image: np.ndarray, camera: Camera, side: str,
                  within: tuple[float, ...] = (0.6, 1.0), min_points: int = 10,
                  cfg: PerceptionConfig = DEFAULT_CONFIG) -> WallSeen:
     """The wall on `side` ('left'/'right') of the body: the floor-wall line put on the floor,

@@ -20,7 +20,7 @@ import numpy as np
 from sim.perception.blobs import (
     NO_GROUND,
     GroundEstimate,
-    _clean,
+    clean_mask,
     ground_estimate,
     table_mask,
     to_hsv,
@@ -81,7 +81,7 @@ def outline(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 def top_face_mask(image: np.ndarray, cfg: PerceptionConfig = DEFAULT_CONFIG) -> np.ndarray:
     """The table top's lit upper face: table pixels at least `top_face_min_value` bright."""
-    clean, _ = _clean(table_mask(image, cfg), cfg)
+    clean, _ = clean_mask(table_mask(image, cfg), cfg)
     return np.asarray(clean & (to_hsv(image)[..., 2] >= cfg.top_face_min_value))
 
 

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from sim.perception.blobs import _clean, table_mask
+from sim.perception.blobs import clean_mask, table_mask
 from sim.perception.config import DEFAULT_CONFIG, Camera, PerceptionConfig, scaled
 from sim.perception.corners import fit_line, outline, top_face_mask
 
@@ -48,7 +48,7 @@ def down_view(image: np.ndarray, camera: Camera, cfg: PerceptionConfig = DEFAULT
               table_lift: float = 0.0) -> DownView:
     """Blue share and the near edge of the table top in a down-camera image. `table_lift`:
     how far the table is above its resting height (m), e.g. while carried."""
-    blue, _ = _clean(table_mask(image, cfg), cfg)
+    blue, _ = clean_mask(table_mask(image, cfg), cfg)
     fraction = float(blue.mean())
     top = top_face_mask(image, cfg)
     h, w = top.shape

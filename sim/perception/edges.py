@@ -22,7 +22,7 @@ import numpy as np
 from sim.perception.blobs import (
     NO_GROUND,
     GroundEstimate,
-    _clean,
+    clean_mask,
     colour_hue,
     ground_estimate,
     hue_lut,
@@ -102,7 +102,7 @@ def floor_wall_edge(image: np.ndarray, cfg: PerceptionConfig = DEFAULT_CONFIG) -
 def table_top_outline(image: np.ndarray, cfg: PerceptionConfig = DEFAULT_CONFIG
                       ) -> tuple[np.ndarray, np.ndarray]:
     """(columns + 0.5, top rows) of the table blob: its top/far edge, per column."""
-    clean, _ = _clean(table_mask(image, cfg), cfg)
+    clean, _ = clean_mask(table_mask(image, cfg), cfg)
     cols, tops, _ = outline(clean)
     return cols + 0.5, tops.astype(float)
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import importlib.util
-from pathlib import Path
 from types import ModuleType
 
 from .helpers_diagram import DATA, ROOT
@@ -17,20 +16,6 @@ def _load() -> ModuleType:
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
-
-
-def test_write_doc_replaces_only_its_section(tmp_path: Path) -> None:
-    bench = _load()
-    doc = tmp_path / "PERFORMANCE.md"
-    doc.write_text("<!-- bench_sim:start -->\nsim\n<!-- bench_sim:end -->\n")
-    bench.write_doc(doc, ["first"])
-    assert (
-        doc.read_text()
-        == f"<!-- bench_sim:start -->\nsim\n<!-- bench_sim:end -->\n\n{bench.START}\nfirst\n{bench.END}\n"
-    )
-    bench.write_doc(doc, ["second"])
-    assert doc.read_text().count("first") == 0 and doc.read_text().count("second") == 1
-    assert doc.read_text().startswith("<!-- bench_sim:start -->\nsim\n")
 
 
 def test_drawing_a_folder_is_timed() -> None:

@@ -15,17 +15,6 @@ def _load() -> ModuleType:
     return module
 
 
-def test_write_doc_replaces_only_its_section(tmp_path: Path) -> None:
-    bench = _load()
-    doc = tmp_path / "PERFORMANCE.md"
-    bench.write_doc(doc, ["first"])
-    assert doc.read_text() == f"{bench.START}\nfirst\n{bench.END}\n"
-    doc.write_text(f"# Title\n\nintro\n\n{bench.START}\nold\n{bench.END}\n\nafter\n")
-    bench.write_doc(doc, ["new", "lines"])
-    expected = f"# Title\n\nintro\n\n{bench.START}\nnew\nlines\n{bench.END}\n\nafter\n"
-    assert doc.read_text() == expected
-
-
 def test_scripted_run_reports_a_rate() -> None:
     rtf, images = _load().scripted_rtf(1.0, 2.0)
     assert rtf > 0 and images == 4

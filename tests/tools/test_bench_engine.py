@@ -74,18 +74,6 @@ def test_peer_harness_with_the_floor() -> None:
         assert measure(work, repeats=1, budget=0.001).n >= 1
 
 
-def test_doc_section_is_the_only_part_rewritten(tmp_path: Path) -> None:
-    doc = tmp_path / "PERFORMANCE.md"
-    doc.write_text("<!-- bench_sim:start -->\nsim\n<!-- bench_sim:end -->\n")
-    ENGINE.update_doc("first", doc)
-    ENGINE.update_doc("second", doc)
-    text = doc.read_text()
-    assert (
-        text
-        == f"<!-- bench_sim:start -->\nsim\n<!-- bench_sim:end -->\n\n{ENGINE.START}\nsecond\n{ENGINE.END}\n"
-    )
-
-
 def test_section_renders_from_a_report() -> None:
     report: dict[str, Any] = {
         "lib": "hfsm",
