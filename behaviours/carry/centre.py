@@ -1,4 +1,5 @@
-"""Align to middle of table (Figure 9, Behaviour 2): look both ways, walk toward the longer side."""
+"""The steps of Align to middle of table (Figure 9, Behaviour 2); the loop is the machine
+machines/align_to_middle_of_table.yaml."""
 
 from __future__ import annotations
 
@@ -9,50 +10,42 @@ from behaviours.carry.sensing import edge, extent
 from hfsm.primitive import Context, Outcome, primitive
 
 
-def relative_difference(left: float, right: float) -> float:
-    """|left - right| relative to the longer side (0 when equal, 1 when one side is 0)."""
-    longer = max(left, right)
-    return abs(left - right) / longer if longer > 0 else 0.0
-
-
-@primitive(outcomes=["aligned", "lost"], failures=["lost"], outputs=["difference"], world="sim")
-def align_to_middle_of_table(
-    ctx: Context,
-    *,
-    difference: float = 0.20,
-    angle_tolerance: float = 20.0,
-    step: float = 0.05,
-    look_yaw: float = 1.3,
-    look_pitch: float = 0.45,
-    edge_pitch: float = 0.5,
-    rounds: int = 12,
+@primitive(outcomes=["measured", "lost"], failures=["lost"], outputs=["left", "right"], world="sim")
+def look_left_and_right(
+    ctx: Context, *, look_yaw: float = 1.3, look_pitch: float = 0.45, edge_pitch: float = 0.5
 ) -> str | Outcome:
-    """Behaviour 2: look left and right to determine which side is the longest; while the
-    relative difference of the lengths exceeds `difference` (0.20: the paper's 20 %): align
-    the body parallel to the table (turn when off by more than `angle_tolerance` degrees),
-    walk sideways toward the longer side for at most `step` m, look again. Each round first
-    looks down at the near edge: to turn parallel, and to measure the lengths along the edge.
+    """Look left and right along the near long edge: how far the table reaches each way (m).
 
-    `lost` when the table is not seen, or after `rounds` rounds without success.
-    Output `difference`: the last relative difference measured.
+    First looks down at the edge, so that a body not quite parallel is allowed for; ends looking
+    ahead. `lost` when the table is not seen.
     """
     body = Body(ctx)
-    for _ in range(rounds):
-        seen = edge(body, edge_pitch)
-        if not seen.found:
-            return "lost"
-        turn = seen.turn
-        if abs(turn) > math.radians(angle_tolerance):
-            body.turn(turn)
-            turn = 0.0
-        left = extent(body, "left", look_yaw, look_pitch, turn)
-        right = extent(body, "right", look_yaw, look_pitch, turn)
-        if not (left.found and right.found):
-            return "lost"
-        rel = relative_difference(left.lateral, right.lateral)
-        if rel <= difference:
-            body.look(0.0, 0.0)
-            return Outcome("aligned", difference=round(rel, 3))
-        shift = min(step, abs(left.lateral - right.lateral) / 2)
-        body.crab(math.copysign(shift, left.lateral - right.lateral))
-    return "lost"
+    seen = edge(body, edge_pitch)
+    if not seen.found:
+        return "lost"
+    left = extent(body, "left", look_yaw, look_pitch, seen.turn)
+    right = extent(body, "right", look_yaw, look_pitch, seen.turn)
+    body.look(0.0, 0.0)
+    if not (left.found and right.found):
+        return "lost"
+    return Outcome("measured", left=round(left.lateral, 4), right=round(right.lateral, 4))
+
+
+@primitive(outcomes=["parallel", "lost"], failures=["lost"], world="sim")
+def align_body_parallel(ctx: Context, *, angle_tolerance: float = 20.0, edge_pitch: float = 0.5) -> str:
+    """Turn the shoulders parallel to the near long edge when off by more than `angle_tolerance`
+    degrees (seen by the down camera). `lost` when the edge is not seen."""
+    body = Body(ctx)
+    seen = edge(body, edge_pitch)
+    if not seen.found:
+        return "lost"
+    if abs(seen.turn) > math.radians(angle_tolerance):
+        body.turn(seen.turn)
+    return "parallel"
+
+
+@primitive(outcomes=["done"], world="sim")
+def walk_sideways(ctx: Context, *, distance: float) -> str:
+    """Crab sideways about `distance` m, left positive."""
+    Body(ctx).crab(distance)
+    return "done"
