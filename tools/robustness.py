@@ -24,6 +24,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from behaviours.trial import TrialSpec  # noqa: E402
+from tools.docsection import write_section  # noqa: E402
 from tools.paper.results import succeeded  # noqa: E402
 from tools.paper_bench import run_all  # noqa: E402
 
@@ -61,6 +62,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--clearance", type=float, default=0.8)
     p.add_argument("--workers", type=int, default=2)
     p.add_argument("--out", type=Path, default=ROOT / "out" / "robustness")
+    p.add_argument("--report", type=Path, help="also write the outcome as a section of this Markdown file")
     args = p.parse_args(argv)
     rng = random.Random(args.seed)
     args.out.mkdir(parents=True, exist_ok=True)
@@ -73,10 +75,18 @@ def main(argv: list[str] | None = None) -> int:
     ok = [t for t in trials if succeeded(t)]
     times = [t["time"] for t in ok]
     mean = f", mean {statistics.fmean(times) / 60:.1f} min, max {max(times) / 60:.1f} min" if times else ""
-    print(f"{len(ok)}/{len(trials)} succeeded{mean}")
+    lines = [f"{len(ok)}/{len(trials)} succeeded{mean}"]
     for t in trials:
         if not succeeded(t):
-            print(f"  {Path(t['spec']['scenario']).name}: {t['error'] or t['score']} {t['outcomes']}")
+            table = yaml.safe_load(Path(t["spec"]["scenario"]).read_text())["table"]
+            pose = f"table at ({table['x']}, {table['y']}), yaw {table['yaw']} deg"
+            lines.append(f"- {Path(t['spec']['scenario']).name}, {pose}: {t['error'] or t['score']}")
+    print("\n".join(lines))
+    if args.report:
+        name = "robustness_table" if args.move_table else "robustness"
+        command = f"`.venv/bin/python tools/robustness.py --starts {args.starts} --seed {args.seed}"
+        command += " --move-table`" if args.move_table else "`"
+        write_section(args.report, name, [f"Command: {command}", "", *lines])
     return 0 if len(ok) == len(trials) else 1
 
 

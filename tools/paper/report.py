@@ -108,6 +108,8 @@ def write_report(runs: dict[str, Trials], out: Path, raw: Path, *, command: str,
         f"{PAPER_NO_WAIT_MINUTES:.0f} min and {100 * PAPER_NO_WAIT_COLLISIONS:.0f} % collisions; "
         "with a 5 % margin instead of 20 %, twice the time.",
         "",
+        "Held-out starts (robots anywhere; the table moved and turned): `docs/ROBUSTNESS.md`.",
+        "",
         "## Ablations",
         "",
         *_ablations(runs),
