@@ -29,12 +29,15 @@ def json_result(result: RunResult, extra: dict[str, Any]) -> str:
     return json.dumps(body, default=str, allow_nan=False)
 
 
-def text_result(result: RunResult, out: TextIO | None = None) -> None:
+def text_result(result: RunResult, extra: dict[str, Any] | None = None, out: TextIO | None = None) -> None:
     out = out or sys.stdout
     for name, r in result.agents.items():
         ended = f"ended in '{r.outcome}'" if r.outcome is not None else "did not end"
         outputs = f" with {json.dumps(r.outputs, default=str)}" if r.outputs else ""
         print(f"{name}: {ended} at t={r.time:g} s{outputs}", file=out)
+    for key, value in (extra or {}).items():
+        shown = ", ".join(f"{k} {v}" for k, v in value.items()) if isinstance(value, dict) else value
+        print(f"{key}: {shown}", file=out)
 
 
 def summary(stats: dict[str, dict[str, BehaviourStats]], dt: float, out: TextIO | None = None) -> None:

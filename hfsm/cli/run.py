@@ -157,7 +157,7 @@ def _run(
     if args.json:
         print(report.json_result(result, extra))
     else:
-        report.text_result(result)
+        report.text_result(result, extra)
     if not args.quiet:
         report.summary(result.stats, args.dt)
     if result.error:
