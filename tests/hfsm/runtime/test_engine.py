@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -10,6 +10,7 @@ from helpers import execute
 
 from hfsm.primitive import Cancelled, Context, Outcome, primitive
 from hfsm.registry import Registry
+from hfsm.world import NullWorld
 
 Machine = Callable[[str, str], Path]
 
@@ -373,40 +374,18 @@ def explode(ctx: Context) -> str:
     raise RuntimeError("boom")
 
 
-class RobotWorld:
-    """A static world whose agents' handles are dicts, to watch primitives clean up."""
-
-    name = "test"
-    static = True
+class RobotWorld(NullWorld):
+    """`--world none` whose agents' handles are dicts, to watch primitives clean up."""
 
     def __init__(self) -> None:
-        from hfsm.world import PerfectRadio
-
-        self.radio = PerfectRadio()
+        super().__init__()
         self.robots: dict[str, dict[str, Any]] = {}
-        self.post, self.collect, self.next_delivery = (
-            self.radio.post,
-            self.radio.collect,
-            self.radio.next_delivery,
-        )
 
-    def agent_names(self) -> None:
-        return None
-
-    def start(self, agents: list[str], dt: float) -> None:
+    def start(self, agents: Sequence[str], dt: float) -> None:
         self.robots = {a: {} for a in agents}
 
     def handle(self, agent: str) -> dict[str, Any]:
         return self.robots[agent]
-
-    def advance(self, tick: int) -> None:
-        pass
-
-    def report(self) -> dict[str, Any]:
-        return {}
-
-    def close(self) -> list[str]:
-        return []
 
 
 def test_primitive_blocks_returns_outputs_and_is_cancelled_with_cleanup(machine: Machine) -> None:
