@@ -114,9 +114,13 @@ class Library:
         path = self.find(name)
         if path is not None:
             return self._add(path)
-        hint = did_you_mean(name, self.known_names())
+        world = self.registry.elsewhere.get(name)
+        if world:
+            message = f"'{name}' is a primitive of --world {world}, not of this run's world"
+        else:
+            message = f"unknown behaviour '{name}'{did_you_mean(name, self.known_names())}"
         for state_name, state in caller.model.states.items():
             if isinstance(state, CallState) and state.do == name:
                 where = ("states", state_name, "do")
-                self.findings.append(caller.doc.finding(where, "E300", f"unknown behaviour '{name}'{hint}"))
+                self.findings.append(caller.doc.finding(where, "E300", message))
         return None

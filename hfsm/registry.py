@@ -15,6 +15,7 @@ class Registry:
 
     def __init__(self, primitives: Iterable[Primitive] = ()) -> None:
         self._by_name: dict[str, Primitive] = {}
+        self.elsewhere: dict[str, str] = {}  # primitives left out: name -> the world they need
         self.add(*primitives)
 
     def add(self, *primitives: Primitive) -> None:
@@ -34,6 +35,12 @@ class Registry:
 
     def names(self) -> list[str]:
         return sorted(self._by_name)
+
+    def for_world(self, world: str) -> Registry:
+        """The primitives a run in `world` may call; the others are remembered in `elsewhere`."""
+        kept = Registry(p for p in self if p.spec.world in (None, world))
+        kept.elsewhere = {p.spec.name: str(p.spec.world) for p in self if p.spec.world not in (None, world)}
+        return kept
 
     @classmethod
     def discover(cls) -> Registry:

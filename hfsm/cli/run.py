@@ -87,6 +87,8 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         raise UsageError("give a machine file (or --schema)")
     with stdout_to_stderr():
         registry = Registry.discover()
+    if args.world is not None:
+        registry = registry.for_world(args.world)
     loaded = load([args.file], libs=args.lib, registry=registry, strict=args.strict)
     report.findings(loaded.warnings)
     if args.check:

@@ -139,3 +139,18 @@ def test_stdout_holds_only_the_json_even_when_plugins_print() -> None:
     done = subprocess.run(args, capture_output=True, text=True, check=False)
     assert done.returncode == 0, done.stderr
     assert json.loads(done.stdout) == {"outcome": "done", "outputs": {"count": 2}, "time": 0.5}
+
+
+def test_world_none_registers_no_simulator_primitive(machine: Machine, capsys: pytest.CaptureFixture[str]) -> None:
+    machine("land_table", "outcomes: [done]\nstates:\n  w: {do: wait, with: {seconds: 1}, on: {done: done}}\n")
+    top = machine("top", "outcomes: [done]\nstates:\n  a: {do: land_table, on: {done: done}}\n")
+    code, out, _ = run(capsys, top, "--world", "none", "--json")
+    assert code == 0 and json.loads(out)["outcome"] == "done"
+
+
+def test_a_simulator_primitive_under_world_none_is_named_as_such(
+    machine: Machine, capsys: pytest.CaptureFixture[str]
+) -> None:
+    top = machine("top", "outcomes: [done]\nstates:\n  a: {do: land_table, on: {landed: done, failure: done}}\n")
+    code, _, err = run(capsys, top, "--world", "none")
+    assert code == 2 and "error[E300]: 'land_table' is a primitive of --world sim" in err
