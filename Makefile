@@ -20,7 +20,7 @@ test: $(STAMP)
 
 lint: $(STAMP)
 	$(BIN)/ruff check hfsm behaviours sim tools tests
-	$(BIN)/mypy hfsm
+	$(BIN)/mypy -p hfsm -p behaviours -p sim
 
 clean:
 	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache
