@@ -69,7 +69,9 @@ class SimWorld:
         return None
 
     def advance(self, tick: int) -> None:
-        self.world.advance(self.dt)
+        # To the exact time of the next tick, so that a dt that is not a whole number of physics
+        # steps does not drift: the world rounds the end of each span to a physics step.
+        self.world.advance((tick + 1) * self.dt - self.world.time)
         if self.progress_every and self.world.time + 1e-9 >= self._next_progress:
             self._next_progress += self.progress_every
             self._progress()

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
@@ -52,17 +53,15 @@ def run_trial(spec: TrialSpec) -> TrialResult:
     params = {k: p.default for k, p in top.model.params.items() if not p.required}
     params.update(spec.params)
     scenario, _ = load_scenario(spec.scenario)
-    recorder = _recorder(spec.video)
-    world = SimWorld(World(scenario, spec.seed, recorder=recorder))
-    trace = JsonlTrace(Path(spec.trace)) if spec.trace else None
-    try:
+    with contextlib.ExitStack() as stack:
+        world = SimWorld(World(scenario, spec.seed, recorder=_recorder(spec.video)))
+        stack.callback(world.close)
+        trace = JsonlTrace(Path(spec.trace)) if spec.trace else None
+        if trace:
+            stack.callback(trace.close)
         options = RunOptions(top.name, world.agent_names(), params, spec.seed, spec.max_time)
         result = run(Program(loaded.machines, registry, spec.dt), world, options, trace)
         score = world.report()["score"]
-    finally:
-        if trace:
-            trace.close()
-        world.close()
     seconds = {a: {b: s.ticks * spec.dt for b, s in t.items()} for a, t in result.stats.items()}
     calls = {a: {b: s.calls for b, s in t.items()} for a, t in result.stats.items()}
     outcomes = {a: r.outcome for a, r in result.agents.items()}

@@ -66,7 +66,7 @@ class SimWorldFactory:
         video = None if args.no_video else args.video or stem.with_suffix(".mp4")
         recorder = None
         if video is not None:
-            video.parent.mkdir(parents=True, exist_ok=True)
+            writable_folder(video.parent, "--video")
             recorder = Recorder(video)
         world = World(
             scenario,
@@ -79,6 +79,13 @@ class SimWorldFactory:
         outputs = [video, video.with_suffix(".png")] if video else []
         trace = stem.with_suffix(".jsonl")
         return SimWorld(world, progress_every=args.progress, outputs=outputs, default_trace=trace)
+
+
+def writable_folder(folder: Path, flag: str) -> None:
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise UsageError(f"{flag}: cannot write in {folder}: {exc.strerror or exc}") from None
 
 
 def _image_size(text: str) -> tuple[int, int]:

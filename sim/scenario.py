@@ -72,9 +72,10 @@ class Scenario(_Strict):
         reach_x, reach_y = (c * t.length + s * t.width) / 2, (s * t.length + c * t.width) / 2
         if abs(t.x) + reach_x > half_w + 1e-9 or abs(t.y) + reach_y > half_d + 1e-9:
             raise ValueError("table does not fit inside the room")
+        slack = self.jitter.position  # the seeded jitter may move a start this far either way
         for name, start in self.robots.items():
-            if abs(start.x) > half_w - 0.2 or abs(start.y) > half_d - 0.2:
-                raise ValueError(f"robot {name!r} starts outside the room or inside a wall")
+            if abs(start.x) + slack > half_w - 0.2 or abs(start.y) + slack > half_d - 0.2:
+                raise ValueError(f"robot {name!r} could start outside the room or inside a wall")
         return self
 
     def starts(self, seed: int) -> dict[str, tuple[float, float, float]]:

@@ -152,11 +152,29 @@ def _figures(args: argparse.Namespace, files: list[Path]) -> list[Figure]:
 
 def _read_trace(path: Path) -> list[dict[str, object]]:
     try:
-        return read_jsonl(path)
+        records = read_jsonl(path)
     except OSError as exc:
         raise UsageError(f"--trace {path}: {exc.strerror or exc}") from exc
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:
         raise UsageError(f"--trace {path}: not a JSON-lines trace ({exc})") from exc
+    for line, record in enumerate(records, start=1):
+        if not _is_record(record):
+            raise UsageError(f"--trace {path}:{line}: not a trace record of hfsm-run --trace")
+    return records
+
+
+def _is_record(record: object) -> bool:
+    if not isinstance(record, dict):
+        return False
+    path, t = record.get("path"), record.get("t")
+    return (
+        isinstance(path, list)
+        and all(isinstance(p, str) for p in path)
+        and isinstance(t, int | float)
+        and not isinstance(t, bool)
+        and isinstance(record.get("kind"), str)
+        and isinstance(record.get("agent"), str)
+    )
 
 
 def write_all(folder: Path, outputs: dict[str, bytes]) -> None:

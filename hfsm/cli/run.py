@@ -147,9 +147,7 @@ def _run(
     options = RunOptions(top.name, _agents(args, world), params, args.seed, args.max_time)
     program = Program(loaded.machines, registry, args.dt)
     trace_path = args.trace or world.default_trace
-    if trace_path:
-        trace_path.parent.mkdir(parents=True, exist_ok=True)
-    trace = JsonlTrace(trace_path) if trace_path else None
+    trace = _open_trace(trace_path) if trace_path else None
     try:
         result = run(program, world, options, trace)
     finally:
@@ -169,6 +167,14 @@ def _run(
     if trace_path:
         print(f"wrote {trace_path}", file=sys.stderr)
     return result.exit_code
+
+
+def _open_trace(path: Path) -> JsonlTrace:
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        return JsonlTrace(path)
+    except OSError as exc:
+        raise UsageError(f"--trace: cannot write {path}: {exc.strerror or exc}") from None
 
 
 def entry() -> None:

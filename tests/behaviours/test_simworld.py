@@ -64,3 +64,18 @@ def test_bad_scenario_file_is_reported_at_its_positions(
 def test_bad_world_arguments_exit_2(machine: Machine, capsys: pytest.CaptureFixture[str], flag: str, value: str) -> None:
     code, _, err = run(capsys, machine("talk", TALK), "--world", "sim", flag, value)
     assert code == 2 and "Traceback" not in err
+
+
+@pytest.mark.parametrize("dt", ["0.01", "0.004"])
+def test_simulated_time_keeps_up_with_any_dt(
+    machine: Machine, capsys: pytest.CaptureFixture[str], tmp_path: Path, dt: str
+) -> None:
+    wait = machine("wait", "outcomes: [done]\nstates:\n  w: {do: wait, with: {seconds: 3}, on: {done: done}}\n")
+    code, out, _ = run(capsys, wait, "--world", "sim", "--dt", dt, "--json", "--no-video", "--out", tmp_path / "o")
+    result = json.loads(out)
+    assert code == 0 and result["agents"]["r1"]["time"] == 3.0 and result["score"]["time"] == pytest.approx(3.0)
+
+
+def test_an_unwritable_output_folder_is_exit_2(machine: Machine, capsys: pytest.CaptureFixture[str]) -> None:
+    code, _, err = run(capsys, machine("talk", TALK), "--world", "sim", "--out", "/proc/nowhere")
+    assert code == 2 and "cannot write in /proc/nowhere" in err

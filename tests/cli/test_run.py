@@ -154,3 +154,8 @@ def test_a_simulator_primitive_under_world_none_is_named_as_such(
     top = machine("top", "outcomes: [done]\nstates:\n  a: {do: land_table, on: {landed: done, failure: done}}\n")
     code, _, err = run(capsys, top, "--world", "none")
     assert code == 2 and "error[E300]: 'land_table' is a primitive of --world sim" in err
+
+
+def test_an_unwritable_trace_is_exit_2(capsys: pytest.CaptureFixture[str]) -> None:
+    code, _, err = run(capsys, ROOT / "examples" / "hello.yaml", "--trace", "/proc/nowhere/t.jsonl")
+    assert code == 2 and "--trace: cannot write /proc/nowhere/t.jsonl" in err

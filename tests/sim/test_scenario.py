@@ -68,6 +68,7 @@ def test_jitter_is_seeded_and_bounded() -> None:
     {"robots": {"r1": {"x": 9.0, "y": 1.0}}},
     {"robots": {"r1": {"x": 0.0, "y": 1.0}}, "table": {"length": 0.4, "width": 0.6}},
     {"robots": {"r1": {"x": 0.0, "y": 1.0}}, "jitter": {"position": -1}},
+    {"robots": {"r1": {"x": 2.2, "y": 0.0}}, "jitter": {"position": 1.0}},
     {"robots": {"r1": {"x": 0.0, "y": 1.0}}, "extra": 1},
 ])
 def test_invalid_scenarios_are_rejected(bad: dict[str, object]) -> None:
