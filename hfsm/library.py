@@ -86,7 +86,8 @@ class Library:
         except UserError as err:
             self.findings.extend(err.findings)
             return None
-        self._check_name(machine)
+        if not self._check_name(machine):
+            return None  # it shadows a built-in or a primitive: reported once, then left out
         existing = self.machines.get(machine.name)
         if existing and existing.path.resolve() != path.resolve():
             self.findings.append(
@@ -97,7 +98,8 @@ class Library:
         self.machines[machine.name] = machine
         return machine
 
-    def _check_name(self, machine: MachineFile) -> None:
+    def _check_name(self, machine: MachineFile) -> bool:
+        """Report a bad name; False when the machine takes a built-in's or a primitive's name."""
         if machine.model.name is not None and machine.model.name != machine.name:
             message = f"name '{machine.model.name}' must equal the file's stem '{machine.name}'"
             self.findings.append(machine.doc.finding(("name",), "E203", message))
@@ -105,6 +107,8 @@ class Library:
             kind = "built-in behaviour" if machine.name in BUILTINS else "registered primitive"
             message = f"machine '{machine.name}' takes the name of a {kind}"
             self.findings.append(machine.doc.finding((), "E319", message))
+            return False
+        return True
 
     def _callees(self, machine: MachineFile) -> list[str]:
         names = {s.do for s in machine.model.states.values() if isinstance(s, CallState)}

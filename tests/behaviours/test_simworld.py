@@ -70,7 +70,7 @@ def test_bad_world_arguments_exit_2(machine: Machine, capsys: pytest.CaptureFixt
 def test_simulated_time_keeps_up_with_any_dt(
     machine: Machine, capsys: pytest.CaptureFixture[str], tmp_path: Path, dt: str
 ) -> None:
-    wait = machine("wait", "outcomes: [done]\nstates:\n  w: {do: wait, with: {seconds: 3}, on: {done: done}}\n")
+    wait = machine("pause", "outcomes: [done]\nstates:\n  w: {do: wait, with: {seconds: 3}, on: {done: done}}\n")
     code, out, _ = run(capsys, wait, "--world", "sim", "--dt", dt, "--json", "--no-video", "--out", tmp_path / "o")
     result = json.loads(out)
     assert code == 0 and result["agents"]["r1"]["time"] == 3.0 and result["score"]["time"] == pytest.approx(3.0)
