@@ -33,7 +33,7 @@ class Edge:
     """A straight table edge in the image, from `start` (the corner end) to `end` (pixel
     coordinates). `angle_deg` is its direction from start to end, counter-clockwise from
     the image's +u axis as seen on screen (v grows downwards). `length_m` is the distance
-    between its ends on the plane z = table_edge_height (nan if not projectable);
+    between its ends on the plane z = table_top_height (nan if not projectable);
     `clipped`: the end lies on the image border, so the edge goes on out of view."""
 
     found: bool

@@ -24,8 +24,8 @@ class DownView:
     """`blue_fraction`: share of table pixels in the image. The near edge (when
     `edge_found`): `image_angle_deg` its slope in the image (0 = level, + = rising to the
     right on screen), `edge_v` its row at the centre column; `angle_deg` the edge's angle
-    to the shoulders in the body frame (0 = parallel; + = the edge's left end is farther,
-    so turn counter-clockwise by it to be parallel); `distance` (m) the edge's x ahead of
+    to the shoulders in the body frame (0 = parallel; turning by -angle_deg, clockwise for a
+    positive angle, makes the shoulders parallel); `distance` (m) the edge's x ahead of
     the robot's centre along its own axis (y = 0)."""
 
     blue_fraction: float
