@@ -83,10 +83,11 @@ def observe_table(body: Body, centre: float, spread: float, pitch: float,
 
 
 def own_colour(body: Body, pitch: float = 0.5) -> int:
-    """Which robot colour is this robot: the colour of its own hands, seen from above."""
+    """Which robot colour is this robot: the colour of its own hands, seen from above; -1 when
+    no hands are seen (then no colour is taken for its own)."""
     body.look(0.0, pitch)
-    blobs = find_robots(body.image("down"))
-    return int(np.argmax([b.area_px if b.found else 0 for b in blobs]))
+    areas = [b.area_px if b.found else 0 for b in find_robots(body.image("down"))]
+    return int(np.argmax(areas)) if max(areas, default=0) > 0 else -1
 
 
 def see_robot(body: Body, yaw: float, pitch: float, own: int) -> RobotSighting:
