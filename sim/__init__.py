@@ -30,6 +30,8 @@ Public API (what the behaviours layer uses)::
     robot.arms_lower(); robot.arms_lift(height)  # hand height above the floor, metres
     robot.arms_state() -> ArmState(height, target, settled)
     robot.holding() -> bool                    # the hands carry the table
+    robot.hand_load() -> HandLoad(force, left, right)  # body frame: N on both hands,
+                                               #   each hand's give (m) off the arm's posture
     robot.bumped() -> bool                     # body touched something in the last advance
 
 Scenarios: `scenario_from_dict(data)` validates parsed YAML, `resolve(name_or_path)` finds
@@ -45,7 +47,7 @@ sim/README.md (numbers in sim/profile.py).
 
 from sim.camera import CameraModel
 from sim.radio import Radio
-from sim.robot import ArmState, Robot
+from sim.robot import ArmState, HandLoad, Robot
 from sim.scenario import (
     DEFAULT_SCENARIO,
     Scenario,
@@ -60,6 +62,7 @@ __all__ = [
     "DEFAULT_SCENARIO",
     "ArmState",
     "CameraModel",
+    "HandLoad",
     "Radio",
     "Robot",
     "Scenario",

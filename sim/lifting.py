@@ -1,7 +1,11 @@
 """Hands under the table: grips form when a rising hand meets the underside of a long side;
 each grip is a POINT2POINT constraint (force but no torque, like a palm). A table tilted past
 the slip angle slides off every hand and is recorded as dropped; so is a lifted table that
-a hand loses because the robots walked apart (the hand pulled more than STRETCH away)."""
+a hand loses because the robots walked apart (the hand pulled more than STRETCH away).
+
+What the hands feel, `load(name)`: the force the grips apply to one robot's hands (world frame,
+N, summed over its grips, low-passed with a LOAD_TAU time constant as arm joint currents are)
+and each hand's give, how far its grip point has pulled it off the arm's posture (m)."""
 
 from __future__ import annotations
 
@@ -21,6 +25,7 @@ REACH = 0.12
 STRETCH = 0.05
 GRIP_TOLERANCE = 0.003
 FLOOR_TOLERANCE = 0.004
+LOAD_TAU = 0.05
 
 
 class Arms(Protocol):
@@ -33,12 +38,15 @@ class _Hands:
     body: RobotBody
     grips: list[tuple[int, np.ndarray, int]] = field(default_factory=list)
     previous: list[float] | None = None
+    load: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    give: np.ndarray = field(default_factory=lambda: np.zeros((2, 3)))
 
 
 class Lifting:
     def __init__(self, cid: int, table: TableBody, bodies: dict[str, RobotBody],
-                 slip_deg: float = SLIP_DEG) -> None:
+                 slip_deg: float = SLIP_DEG, dt: float = 1.0 / 120) -> None:
         self._cid = cid
+        self._smoothing = min(1.0, dt / LOAD_TAU)
         self._table = table
         self._hands = {name: _Hands(body) for name, body in bodies.items()}
         self._arms: dict[str, Arms] = {}
@@ -51,6 +59,13 @@ class Lifting:
     def holding(self, name: str) -> bool:
         return bool(self._hands[name].grips)
 
+    def load(self, name: str) -> tuple[np.ndarray, np.ndarray]:
+        """What this robot's hands feel, world frame: the force (N) the grips put on them,
+        summed and low-passed, and each hand's give (m; rows: left hand, right hand), how far
+        its grip pulls it off the posture the arm holds. Zeros when they hold nothing."""
+        hands = self._hands[name]
+        return hands.load.copy(), hands.give.copy()
+
     def update(self) -> None:
         """Call after every physics step."""
         table: tuple[np.ndarray, np.ndarray] | None = None
@@ -62,10 +77,29 @@ class Lifting:
             points = self._hand_points(hands.body)
             if hands.grips:
                 self._check_grips(name, hands, points, table)
+                self._measure_give(hands, points, table)
             else:
                 self._try_grip(hands, points, table)
         if table is not None and any(h.grips for h in self._hands.values()):
             self._check_slip(table[1])
+        self._feel()
+
+    def _measure_give(self, hands: _Hands, points: list[np.ndarray],
+                      table: tuple[np.ndarray, np.ndarray]) -> None:
+        hands.give = np.zeros((2, 3))
+        for _, anchor, index in hands.grips:
+            hands.give[index] = table[0] + table[1] @ anchor - points[index]
+
+    def _feel(self) -> None:
+        for hands in self._hands.values():
+            force = np.zeros(3)
+            for grip in hands.grips:
+                force += p.getConstraintState(grip[0], physicsClientId=self._cid)[:3]
+            if not hands.grips:
+                hands.give = np.zeros((2, 3))
+                hands.load = force
+            else:
+                hands.load = hands.load + self._smoothing * (force - hands.load)
 
     def _table_pose(self) -> tuple[np.ndarray, np.ndarray]:
         pos, orn = p.getBasePositionAndOrientation(self._table.body, physicsClientId=self._cid)

@@ -23,6 +23,14 @@ def _clamp(value: float, low: float, high: float) -> float:
     return max(low, min(high, value))
 
 
+Vector = tuple[float, float, float]
+
+
+def _to_body(v: np.ndarray, yaw: float) -> Vector:
+    c, s = math.cos(yaw), math.sin(yaw)
+    return (float(c * v[0] + s * v[1]), float(-s * v[0] + c * v[1]), float(v[2]))
+
+
 @dataclass(frozen=True)
 class ArmState:
     """Hand height above the floor (m), the commanded height, and whether they are there."""
@@ -32,6 +40,34 @@ class ArmState:
     settled: bool
 
 
+@dataclass(frozen=True)
+class HandLoad:
+    """What the arms feel of the load in the hands, in the body frame (forward, left, up):
+
+    * `force` (N, summed over both hands): what the arm joints' currents tell. A table held
+      still weighs ~10 N down on each of two carriers, and the carriers squeeze, stretch or
+      shear it between them by tens of N when they are a few mm out of place.
+    * `left`, `right` (m): each hand's give, how far the load has pulled it off the posture
+      the arm holds (the joint encoders against their targets). Millimetres to ~1.5 cm while the
+      carriers keep the table between them; it grows at walking speed when the table is stuck
+      (a corner against a wall) and the robot walks on; at 5 cm the hand loses its grip.
+
+    All zero when the hands hold nothing (a hand that grips nothing gives nothing)."""
+
+    force: Vector
+    left: Vector
+    right: Vector
+
+    @property
+    def give(self) -> Vector:
+        """The mean of the two hands' give (m): how the load pulls the pair of hands."""
+        return (
+            (self.left[0] + self.right[0]) / 2,
+            (self.left[1] + self.right[1]) / 2,
+            (self.left[2] + self.right[2]) / 2,
+        )
+
+
 class Robot:
     """Commands are held until changed; all readings are what the robot itself could sense.
 
@@ -39,12 +75,14 @@ class Robot:
 
     def __init__(self, cid: int, name: str, body: RobotBody, motion: MotionProfile,
                  rng: np.random.Generator, image_size: tuple[int, int],
-                 holding: Callable[[], bool]) -> None:
+                 holding: Callable[[], bool],
+                 load: Callable[[], tuple[np.ndarray, np.ndarray]]) -> None:
         self.name = name
         self.profile = motion
         self._cid, self._body, self._g = cid, body, body.geometry
         self._image_size = image_size
         self._holding = holding
+        self._load = load
         self._cmd = (0.0, 0.0, 0.0)
         pose = self._true_pose()
         self._target = pose
@@ -134,6 +172,13 @@ class Robot:
     def holding(self) -> bool:
         """True while the hands carry a load (the table gripped from below)."""
         return self._holding()
+
+    def hand_load(self) -> HandLoad:
+        """The load on the hands, in the body frame (see `HandLoad`); the force is low-passed
+        over ~0.05 s. Zero when not holding."""
+        force, give = self._load()
+        yaw = self._true_pose()[2]
+        return HandLoad(_to_body(force, yaw), _to_body(give[0], yaw), _to_body(give[1], yaw))
 
     # called by World
     def _true_pose(self) -> tuple[float, float, float]:

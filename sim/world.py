@@ -46,10 +46,11 @@ class World:
         starts = scenario.starts(seed)
         bodies = {name: build_robot(cid, body, motion, ROBOT_COLOURS[i % len(ROBOT_COLOURS)],
                                     starts[name]) for i, name in enumerate(starts)}
-        self._lifting = Lifting(cid, table, bodies)
+        self._lifting = Lifting(cid, table, bodies, dt=1.0 / physics_hz)
         self.robots: dict[str, Robot] = {
             name: Robot(cid, name, b, motion, np.random.default_rng([seed, i, 0x0D0]),
-                        image_size, partial(self._lifting.holding, name))
+                        image_size, partial(self._lifting.holding, name),
+                        partial(self._lifting.load, name))
             for i, (name, b) in enumerate(bodies.items())}
         self._lifting.bind(self.robots)
         self.truth = Truth(cid, scenario.room, room, table, bodies)
