@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import pytest
@@ -61,7 +62,7 @@ def test_lift_step_land_carries_the_table_level(tmp_path: Path) -> None:
           step:
             do: small_step_sideways
             with: {direction: "${'left' if agent.id == 'r1' else 'right'}", steps: 3}
-            on: {stepped: land, dropped: failure}
+            on: {stepped: land, blocked: failure, dropped: failure}
           land: {do: land_table, on: {landed: done, failure: failure}}
     """)
     run = run_in_scene(top, at_table())
@@ -114,3 +115,34 @@ def test_table_at_wall(tmp_path: Path, table_x: float, outcome: str, steps: int)
     assert run.outcome() == outcome
     assert run.outputs()["gap"] == pytest.approx(gap, abs=0.03)
     assert run.outputs()["steps"] == pytest.approx(steps, abs=1)
+
+
+def test_small_step_sideways_stops_when_the_table_is_stuck(tmp_path: Path) -> None:
+    """A table turned 30 degrees meets the wall with a corner: both carriers feel it on their
+    hands, stop (`blocked`) and land it, instead of walking on until the grip gives."""
+    yaw, table_x = math.radians(30.0), 1.2
+    nx, ny = -math.sin(yaw), math.cos(yaw)
+    scenario = {"room": {"width": 4.0, "depth": 4.0}, "table": {"x": table_x, "yaw": 30.0},
+                "jitter": {"position": 0.0, "yaw": 0.0},
+                "robots": {"r1": {"x": table_x - 0.34 * nx, "y": -0.34 * ny, "yaw": 120.0},
+                           "r2": {"x": table_x + 0.34 * nx, "y": 0.34 * ny, "yaw": -60.0}}}
+    top = machine_file(tmp_path, """
+        vars: {give: 0.0}
+        outcomes: [stepped, blocked, failure, timeout]
+        outputs: {give: "${vars.give}"}
+        timer: 60
+        states:
+          lift: {do: lift_table, on: {lifted: step, failure: failure}}
+          step:
+            do: small_step_sideways
+            with: {direction: "${'right' if agent.id == 'r1' else 'left'}", steps: 12}
+            save: {give: give}
+            on: {stepped: land_stepped, blocked: land_blocked, dropped: failure}
+          land_stepped: {do: land_table, on: {landed: stepped, failure: failure}}
+          land_blocked: {do: land_table, on: {landed: blocked, failure: failure}}
+    """)
+    run = run_in_scene(top, scenario)
+    assert (run.outcome("r1"), run.outcome("r2")) == ("blocked", "blocked")
+    assert all(0.02 < run.outputs(r)["give"] < 0.05 for r in ("r1", "r2"))
+    assert not run.score["dropped"]
+    assert run.score["table_wall_distance"] < 0.01
