@@ -14,14 +14,14 @@ import numpy as np
 
 from hfsm.primitive import Context
 from sim import CameraModel, Robot
-from sim.profile import DEFAULT_MOTION, MotionProfile
+from sim.profile import MotionProfile
 
 
 class Body:
-    def __init__(self, ctx: Context, motion: MotionProfile = DEFAULT_MOTION) -> None:
+    def __init__(self, ctx: Context) -> None:
         self.ctx = ctx
         self.robot: Robot = ctx.robot
-        self.motion = motion
+        self.motion: MotionProfile = self.robot.profile  # its own speeds: timed moves cover their spans
 
     def _hold(self, forward: float, sideways: float, turn: float, seconds: float) -> None:
         if seconds <= 0:

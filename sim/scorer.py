@@ -69,14 +69,16 @@ class Scorer:
             if self._truth.robot_tilt(name) > FALLEN:
                 self.fallen.add(name)
 
-    def score(self, time: float) -> dict[str, Any]:
+    def score(self, time: float, *, dropped: bool = False) -> dict[str, Any]:
+        """The outcome so far; `dropped` adds what the lifting rules saw to the scorer's own view."""
         distance = self._truth.table_wall_distance()
         robot_hits = self.episodes["robot"]
-        success = distance <= self.success_distance and not self.dropped and robot_hits == 0
+        dropped = dropped or self.dropped
+        success = distance <= self.success_distance and not dropped and robot_hits == 0
         return {
             "success": bool(success),
             "table_wall_distance": round(distance, 4),
-            "dropped": self.dropped,
+            "dropped": dropped,
             "robot_collisions": robot_hits,
             "robot_table_collisions": self.episodes["table"],
             "robot_wall_collisions": self.episodes["wall"],

@@ -37,28 +37,33 @@ class World:
         self.scenario, self.seed, self.physics_hz = scenario, seed, physics_hz
         self.image_size = image_size
         self._cid: int | None = p.connect(p.DIRECT)
-        cid = self._cid
-        p.setGravity(0.0, 0.0, -9.81, physicsClientId=cid)
-        p.setTimeStep(1.0 / physics_hz, physicsClientId=cid)
-        p.setPhysicsEngineParameter(deterministicOverlappingPairs=1, physicsClientId=cid)
-        room = build_room(cid, scenario.room)
-        table = build_table(cid, scenario.table)
-        starts = scenario.starts(seed)
-        bodies = {name: build_robot(cid, body, motion, ROBOT_COLOURS[i % len(ROBOT_COLOURS)],
-                                    starts[name]) for i, name in enumerate(starts)}
-        self._lifting = Lifting(cid, table, bodies, dt=1.0 / physics_hz)
-        self.robots: dict[str, Robot] = {
-            name: Robot(cid, name, b, motion, np.random.default_rng([seed, i, 0x0D0]),
-                        image_size, partial(self._lifting.holding, name),
-                        partial(self._lifting.load, name))
-            for i, (name, b) in enumerate(bodies.items())}
-        self._lifting.bind(self.robots)
-        self.truth = Truth(cid, scenario.room, room, table, bodies)
-        self._scorer = Scorer(cid, self.truth, success_distance)
-        self.radio = Radio(radio_latency, radio_loss, seed)
-        self._steps = 0
-        self._recorder = recorder
-        self._next_capture = 0.0
+        try:  # a failed set-up must not leave the client connected
+            cid = self._cid
+            p.setGravity(0.0, 0.0, -9.81, physicsClientId=cid)
+            p.setTimeStep(1.0 / physics_hz, physicsClientId=cid)
+            p.setPhysicsEngineParameter(deterministicOverlappingPairs=1, physicsClientId=cid)
+            room = build_room(cid, scenario.room)
+            table = build_table(cid, scenario.table)
+            starts = scenario.starts(seed)
+            bodies = {name: build_robot(cid, body, motion, ROBOT_COLOURS[i % len(ROBOT_COLOURS)],
+                                        starts[name]) for i, name in enumerate(starts)}
+            self._lifting = Lifting(cid, table, bodies, dt=1.0 / physics_hz)
+            self.robots: dict[str, Robot] = {
+                name: Robot(cid, name, b, motion, np.random.default_rng([seed, i, 0x0D0]),
+                            image_size, partial(self._lifting.holding, name),
+                            partial(self._lifting.load, name))
+                for i, (name, b) in enumerate(bodies.items())}
+            self._lifting.bind(self.robots)
+            self.truth = Truth(cid, scenario.room, room, table, bodies)
+            self._scorer = Scorer(cid, self.truth, success_distance)
+            self.radio = Radio(radio_latency, radio_loss, seed)
+            self._steps = 0
+            self._recorder = recorder
+            self._next_capture = 0.0
+        except BaseException:
+            p.disconnect(physicsClientId=self._cid)
+            self._cid = None
+            raise
         self._capture()
 
     @property
@@ -100,8 +105,7 @@ class World:
 
     def score(self) -> dict[str, Any]:
         """Ground-truth outcome; see sim.scorer.Scorer.score for the keys."""
-        self._scorer.dropped = self.dropped
-        return self._scorer.score(self.time)
+        return self._scorer.score(self.time, dropped=self.dropped)
 
     def close(self) -> None:
         if self._recorder is not None:
