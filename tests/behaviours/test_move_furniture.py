@@ -28,3 +28,15 @@ def test_two_robots_move_the_table_to_a_wall(tmp_path: Path, capsys: pytest.Capt
     assert written == ["opposite_long_side-seed0.jsonl", "opposite_long_side-seed0.mp4", "opposite_long_side-seed0.png"]
     records = [json.loads(line) for line in (tmp_path / "opposite_long_side-seed0.jsonl").read_text().splitlines()]
     assert records[-1]["kind"] == "exit" and records[-1]["path"] == ["move_furniture"]
+
+
+@pytest.mark.slow
+def test_the_same_seed_gives_the_same_trace_byte_for_byte(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    traces = []
+    for run in ("a", "b"):
+        out = tmp_path / run
+        argv = [str(ROOT / "machines" / "move_furniture.yaml"), "--scenario", "same_side", "--seed", "7"]
+        assert main([*argv, "--no-video", "--out", str(out), "--quiet"]) == 0
+        traces.append((out / "same_side-seed7.jsonl").read_bytes())
+    capsys.readouterr()
+    assert traces[0] == traces[1] and len(traces[0]) > 10_000
