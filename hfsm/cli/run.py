@@ -6,7 +6,6 @@ import argparse
 import logging
 import math
 import sys
-import traceback
 from collections.abc import Sequence
 from importlib.metadata import entry_points
 from pathlib import Path
@@ -14,7 +13,7 @@ from pathlib import Path
 from hfsm.cli import report
 from hfsm.cli.params import parse_params
 from hfsm.cli.quiet import stdout_to_stderr
-from hfsm.errors import HfsmError, UsageError, UserError
+from hfsm.errors import UsageError, UserError
 from hfsm.load import Loaded, load
 from hfsm.names import is_name
 from hfsm.registry import Registry
@@ -180,8 +179,6 @@ def _open_trace(path: Path) -> JsonlTrace:
 def entry() -> None:
     sys.exit(main())
 
-
-__all__ = ["HfsmError", "entry", "main", "traceback"]
 
 
 if __name__ == "__main__":

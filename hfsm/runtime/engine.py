@@ -8,7 +8,6 @@ from __future__ import annotations
 
 from typing import Any
 
-from hfsm.builtins import BUILTINS
 from hfsm.expr import ExprValueError
 from hfsm.primitive import Message
 from hfsm.runtime.agent import Agent, AgentResult, Event, Frame
@@ -335,5 +334,3 @@ class Engine:
             path = agent.path(len(agent.stack) - 1) if agent.stack else [agent.top]
             self.emit(agent, path, "receive", message=message.name, sender=message.sender, data=message.data)
 
-
-__all__ = ["BUILTINS", "Engine", "FatalError"]
