@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import importlib.util
 import textwrap
 from collections.abc import Sequence
 from pathlib import Path
+from types import ModuleType
 from typing import Any
 
 from hfsm.load import load
@@ -44,3 +46,12 @@ def execute(
     options = RunOptions(top.name, list(agents), full, seed, max_time)
     result = run(program, world or NullWorld(), options, trace)
     return result, trace.records
+
+
+def load_tool(name: str) -> ModuleType:
+    """Import a script of tools/ from its file (tools/ is not a package to install)."""
+    spec = importlib.util.spec_from_file_location(name, ROOT / "tools" / f"{name}.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module

@@ -2,27 +2,14 @@
 
 from __future__ import annotations
 
-import importlib.util
 from dataclasses import asdict
 from pathlib import Path
-from types import ModuleType
 from typing import Any
 
 import pytest
+from helpers import load_tool
 
-TOOL = Path(__file__).resolve().parents[2] / "tools" / "bench_engine.py"
-
-
-def _load() -> ModuleType:
-    """Import the tool from its file (which also puts tools/ on sys.path for `bench.*`)."""
-    spec = importlib.util.spec_from_file_location("bench_engine", TOOL)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-ENGINE = _load()
+ENGINE = load_tool("bench_engine")
 
 from bench.harness import CheckFailed, count_calls, measure  # noqa: E402
 from bench.hfsm_workloads import HfsmBench  # noqa: E402
