@@ -6,8 +6,11 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 from functools import cached_property
 
+import networkx as nx
+
 from hfsm.builtins import BUILTINS
 from hfsm.errors import Finding, Severity
+from hfsm.graph import call_graph
 from hfsm.library import MachineFile
 from hfsm.model import CallState, ChoiceState, Machine
 from hfsm.registry import Registry
@@ -43,6 +46,11 @@ class CheckContext:
         specs.update({p.spec.name: p.spec for p in self.registry})
         specs.update({name: machine_spec(m) for name, m in self.machines.items()})
         return specs
+
+    @cached_property
+    def calls(self) -> nx.DiGraph:
+        """Who calls whom, among the loaded machines and what they call."""
+        return call_graph({name: m.model for name, m in self.machines.items()})
 
     def error(self, machine: MachineFile, path: Path_, code: str, message: str, *, key: bool = False) -> None:
         self.findings.append(machine.doc.finding(path, code, message, key=key))

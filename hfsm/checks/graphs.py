@@ -7,7 +7,7 @@ from functools import cache
 import networkx as nx
 
 from hfsm.checks.context import CheckContext
-from hfsm.graph import arcs, call_graph, state_graph
+from hfsm.graph import arcs, state_graph
 from hfsm.library import MachineFile
 from hfsm.model import CallState, ChoiceState
 
@@ -17,7 +17,7 @@ def _cyclic_components(g: nx.DiGraph | nx.MultiDiGraph) -> list[set[object]]:
 
 
 def check_recursion(ctx: CheckContext) -> None:
-    g = call_graph({n: m.model for n, m in ctx.machines.items()})
+    g = ctx.calls
     for component in _cyclic_components(g):
         for caller in sorted(str(c) for c in component):
             for callee in sorted(str(c) for c in g.successors(caller) if c in component):
@@ -76,7 +76,7 @@ def _warn_loops(ctx: CheckContext, mf: MachineFile, g: nx.MultiDiGraph) -> None:
 
 def _guarded(ctx: CheckContext, name: str) -> bool:
     """A machine's loops are bounded when it, or every path of calls above it, has a timer."""
-    g = call_graph({n: m.model for n, m in ctx.machines.items()})
+    g = ctx.calls
 
     @cache
     def guarded(machine: str, depth: int) -> bool:
