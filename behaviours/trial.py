@@ -11,7 +11,7 @@ from typing import Any
 from behaviours.simworld import SimWorld, load_scenario
 from hfsm.load import load
 from hfsm.registry import Registry
-from hfsm.runtime.program import Program
+from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, run
 from hfsm.trace import JsonlTrace
 from sim import World
@@ -50,8 +50,7 @@ def run_trial(spec: TrialSpec) -> TrialResult:
     registry = Registry.discover()
     loaded = load([Path(spec.machine)], registry=registry)
     top = loaded.roots[0]
-    params = {k: p.default for k, p in top.model.params.items() if not p.required}
-    params.update(spec.params)
+    params = machine_params(top, spec.params)
     scenario, _ = load_scenario(spec.scenario)
     with contextlib.ExitStack() as stack:
         world = SimWorld(World(scenario, spec.seed, recorder=_recorder(spec.video)))

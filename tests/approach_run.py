@@ -13,7 +13,7 @@ from behaviours.simworld import SimWorld
 from hfsm.load import load
 from hfsm.primitive import Context, primitive
 from hfsm.registry import Registry
-from hfsm.runtime.program import Program
+from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, RunResult, run
 from hfsm.trace import ListTrace
 from sim import World, load_scenario
@@ -102,8 +102,7 @@ def run_machine(top: Path, scenario: str, seed: int, *, extra: list[Path] | None
     reg = reg or registry()
     loaded = load([top, *(extra or [])], registry=reg)
     root = loaded.roots[0]
-    full = {k: p.default for k, p in root.model.params.items() if not p.required}
-    full.update(params or {})
+    full = machine_params(root, params or {})
     world = World(load_scenario(scenario), seed)
     try:
         start = distances(world)

@@ -12,7 +12,7 @@ from typing import Any
 from behaviours.simworld import SimWorld
 from hfsm.load import load
 from hfsm.registry import Registry
-from hfsm.runtime.program import Program
+from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, RunResult, run
 from hfsm.trace import ListTrace
 from sim import World, load_scenario, scenario_from_dict
@@ -84,8 +84,7 @@ def run_in_scene(top: Path, scenario: dict[str, Any] | str, *, seed: int = 0,
     reg = Registry.discover()
     loaded = load([top], registry=reg)
     root = loaded.roots[0]
-    full = {k: p.default for k, p in root.model.params.items() if not p.required}
-    full.update(params or {})
+    full = machine_params(root, params or {})
     spec = load_scenario(scenario) if isinstance(scenario, str) else scenario_from_dict(scenario)
     world = World(spec, seed, radio_latency=radio_latency)
     try:

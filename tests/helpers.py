@@ -11,7 +11,7 @@ from typing import Any
 
 from hfsm.load import load
 from hfsm.registry import Registry
-from hfsm.runtime.program import Program
+from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, RunResult, run
 from hfsm.trace import ListTrace
 from hfsm.world import NullWorld, World
@@ -39,8 +39,7 @@ def execute(
     registry = registry or Registry()
     loaded = load([path], registry=registry)
     top = loaded.roots[0]
-    full = {k: p.default for k, p in top.model.params.items() if not p.required}
-    full.update(params or {})
+    full = machine_params(top, params or {})
     program = Program(loaded.machines, registry, dt)
     trace = ListTrace()
     options = RunOptions(top.name, list(agents), full, seed, max_time)

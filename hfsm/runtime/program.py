@@ -39,6 +39,14 @@ def resolve_params(spec: BehaviourSpec, given: Mapping[str, Any]) -> dict[str, A
     return params
 
 
+def machine_params(machine: MachineFile, given: Mapping[str, Any]) -> dict[str, Any]:
+    """A top machine's params from Python values: typed, defaults filled (ValueError if wrong)."""
+    params = resolve_params(machine_spec(machine), given)
+    if isinstance(params, str):
+        raise ValueError(params)
+    return params
+
+
 class RState:
     __slots__ = (
         "arcs", "branches", "callee", "do", "error_target", "is_choice", "kind", "machine",
