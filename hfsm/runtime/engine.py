@@ -13,7 +13,7 @@ from hfsm.primitive import Message
 from hfsm.runtime.agent import Agent, AgentResult, Event, Frame
 from hfsm.runtime.builtins import STARTERS
 from hfsm.runtime.primitives import PrimitiveActivity, RunContext
-from hfsm.runtime.program import RMachine, RState, resolve_params, span_ticks
+from hfsm.runtime.program import RMachine, RState, resolve_params, span_ticks, timer_ticks
 from hfsm.spec import is_finite_number
 from hfsm.trace import TraceSink
 from hfsm.world import World
@@ -203,7 +203,7 @@ class Engine:
             return Event("error", error=f"timer: {exc}")
         if not is_finite_number(seconds) or seconds <= 0:
             return Event("error", error=f"timer must be a positive number of seconds, not {seconds!r}")
-        return max(1, span_ticks(seconds, self.dt))
+        return timer_ticks(seconds, self.dt)
 
     def _params(self, state: RState, frame: Frame) -> dict[str, Any] | Event:
         if state.params is not None:

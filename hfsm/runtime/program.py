@@ -23,6 +23,11 @@ def span_ticks(seconds: float, dt: float) -> int:
     return math.ceil(seconds / dt - 1e-9)
 
 
+def timer_ticks(seconds: float, dt: float) -> int:
+    """A timer's span in ticks: at least one, so it fires in a later tick than it began."""
+    return max(1, span_ticks(seconds, dt))
+
+
 def resolve_params(spec: BehaviourSpec, given: Mapping[str, Any]) -> dict[str, Any] | str:
     """The params a callee gets: given values typed, defaults filled; or a problem as text."""
     if spec.open_params:
@@ -104,7 +109,7 @@ class Program:
             return None
         if isinstance(timer, str):
             return compile_expr(timer.strip()[2:-1], names)
-        return max(1, span_ticks(timer, self.dt))  # a timer fires in a later tick than it began
+        return timer_ticks(timer, self.dt)
 
     def _compile(self, rm: RMachine, m: Machine) -> None:
         rm.var_init = dict(m.vars)
