@@ -5,7 +5,6 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from enum import StrEnum
-from pathlib import Path
 
 
 class Severity(StrEnum):
@@ -46,6 +45,3 @@ class UserError(HfsmError):
 class UsageError(HfsmError):
     """A bad command-line argument, not tied to a file position; exit 2."""
 
-
-def finding_at_start(path: Path | str, code: str, message: str) -> Finding:
-    return Finding(str(path), 1, 1, code, message)

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, Literal
 
 Kind = Literal["builtin", "primitive", "machine"]
@@ -30,7 +30,6 @@ class BehaviourSpec:
     doc: str = ""
     world: str | None = None  # the world a primitive needs, e.g. "sim"
     open_params: bool = False  # `set` takes the caller's vars as params
-    extra: dict[str, Any] = field(default_factory=dict, compare=False)
 
 
 def type_ok(value: Any, type_name: str) -> bool:
