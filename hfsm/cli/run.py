@@ -107,7 +107,8 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
 def _world(
     args: argparse.Namespace, loaded: Loaded, registry: Registry, factories: dict[str, WorldFactory]
 ) -> World:
-    needs = sorted({p.spec.world for p in registry if p.spec.world and _used(loaded, p.spec.name)})
+    called = {getattr(s, "do", None) for mf in loaded.machines.values() for s in mf.model.states.values()}
+    needs = sorted({p.spec.world for p in registry if p.spec.world and p.spec.name in called})
     name = args.world or (needs[0] if needs else "none")
     wrong = [w for w in needs if w != name]
     if wrong:
@@ -116,14 +117,6 @@ def _world(
         return NullWorld()
     with stdout_to_stderr():
         return factories[name].create(args, args.seed)
-
-
-def _used(loaded: Loaded, behaviour: str) -> bool:
-    return any(
-        getattr(state, "do", None) == behaviour
-        for mf in loaded.machines.values()
-        for state in mf.model.states.values()
-    )
 
 
 def _agents(args: argparse.Namespace, world: World) -> list[str]:
