@@ -8,7 +8,7 @@ from typing import Literal
 
 import networkx as nx
 
-from hfsm.model import CallState, IfBranch, Machine
+from hfsm.model import CallState, ChoiceState, IfBranch, Machine
 from hfsm.spec import BehaviourSpec
 
 ArcKind = Literal["outcome", "failure", "timeout", "message", "error", "choice", "else"]
@@ -36,10 +36,10 @@ def arcs(m: Machine, specs: Mapping[str, BehaviourSpec]) -> list[Arc]:
             failures = spec.failures if spec else frozenset()
             for event, target in state.on.items():
                 out.append(Arc(name, target, event, _kind(event, failures, receives)))
-        else:
+        elif isinstance(state, ChoiceState):
             for i, branch in enumerate(state.choose, start=1):
                 if isinstance(branch, IfBranch):
-                    out.append(Arc(name, branch.then, branch.if_, "choice", i))
+                    out.append(Arc(name, branch.then, branch.condition, "choice", i))
                 else:
                     out.append(Arc(name, branch.else_, "else", "else", i))
     return out

@@ -28,19 +28,103 @@ class Param(Strict):
         return "default" not in self.model_fields_set
 
 
+Condition = str | bool | int | float | None  # a bare expression, or a YAML literal (SPEC 7)
+
+
+def condition_text(value: Condition) -> str:
+    """A condition as expression text: a YAML literal (`true`, `null`, `3`) reads as that literal."""
+    if isinstance(value, str):
+        return value
+    if value is None:
+        return "null"
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return repr(value)
+Count = Annotated[int, Field(gt=0)] | Expr
+Delay = Annotated[float, Field(ge=0, allow_inf_nan=False)] | Expr
+
+
+class Watch(Strict):
+    """A condition tried on entry and every tick (SPEC 12)."""
+
+    if_: Condition = Field(alias="if")
+    then: Name
+    doc: str | None = None
+
+    @property
+    def condition(self) -> str:
+        return condition_text(self.if_)
+
+
+class Retry(Strict):
+    """Call the behaviour again when it ends with one of these outcomes (SPEC 13)."""
+
+    on: list[Name] = Field(min_length=1, description="outcomes of the callee, or `error`")
+    times: Count = Field(description="retries after the first call: a positive int or ${params...}")
+    delay: Delay = Field(default=0, description="seconds between an end and the next call")
+
+
 class CallState(Strict):
     do: Name = Field(description="a built-in, a primitive or another machine")
     with_: dict[str, Any] = Field(default_factory=dict, alias="with")
     save: dict[Name, Name] = Field(default_factory=dict, description="var <- callee output")
     timer: Timer | None = None
     on: dict[Name, Name] = Field(default_factory=dict, description="event -> state or outcome")
+    watch: list[Watch] = Field(default_factory=list)
+    retry: Retry | None = None
+    doc: str | None = None
+
+
+class Region(Strict):
+    """One behaviour of a parallel state (SPEC 11)."""
+
+    do: Name = Field(description="a built-in, a primitive or another machine")
+    with_: dict[str, Any] = Field(default_factory=dict, alias="with")
+    save: dict[Name, Name] = Field(default_factory=dict, description="var <- callee output")
+    background: bool = Field(default=False, description="never awaited; cancelled when the state is left")
+    doc: str | None = None
+
+
+class JoinRule(Strict):
+    when: dict[Name, Name | list[Name]] = Field(min_length=1, description="region -> outcome(s)")
+    then: Name
+    doc: str | None = None
+
+
+class JoinElse(Strict):
+    else_: Name = Field(alias="else")
+    doc: str | None = None
+
+
+def _join_kind(value: Any) -> str:
+    if isinstance(value, dict):
+        return "join-else" if "else" in value else "join-rule"
+    return "join-else" if isinstance(value, JoinElse) else "join-rule"
+
+
+JoinBranch = Annotated[
+    Annotated[JoinRule, Tag("join-rule")] | Annotated[JoinElse, Tag("join-else")],
+    Discriminator(_join_kind),
+]
+
+
+class ParallelState(Strict):
+    parallel: dict[Name, Region] = Field(min_length=1, description="regions, started in this order")
+    join: list[JoinBranch] = Field(min_length=1, description="rules tried in order; `else` may end it")
+    timer: Timer | None = None
+    on: dict[Name, Name] = Field(default_factory=dict, description="event -> state or outcome")
+    watch: list[Watch] = Field(default_factory=list)
     doc: str | None = None
 
 
 class IfBranch(Strict):
-    if_: str = Field(alias="if")
+    if_: Condition = Field(alias="if")
     then: Name
     doc: str | None = None
+
+    @property
+    def condition(self) -> str:
+        return condition_text(self.if_)
 
 
 class ElseBranch(Strict):
@@ -67,12 +151,18 @@ class ChoiceState(Strict):
 
 def _state_kind(value: Any) -> str:
     if isinstance(value, dict):
-        return "choice-state" if "choose" in value else "call-state"
-    return "choice-state" if isinstance(value, ChoiceState) else "call-state"
+        if "choose" in value:
+            return "choice-state"
+        return "parallel-state" if "parallel" in value else "call-state"
+    if isinstance(value, ChoiceState):
+        return "choice-state"
+    return "parallel-state" if isinstance(value, ParallelState) else "call-state"
 
 
 State = Annotated[
-    Annotated[CallState, Tag("call-state")] | Annotated[ChoiceState, Tag("choice-state")],
+    Annotated[CallState, Tag("call-state")]
+    | Annotated[ChoiceState, Tag("choice-state")]
+    | Annotated[ParallelState, Tag("parallel-state")],
     Discriminator(_state_kind),
 ]
 
@@ -92,6 +182,7 @@ class Machine(Strict):
     receives: list[Name] = Field(default_factory=list)
     timer: Timer | None = None
     any: dict[Name, Name] = Field(default_factory=dict)
+    watch: list[Watch] = Field(default_factory=list, description="tried in every call and parallel state")
     initial: Name | None = None
     states: dict[Name, State] = Field(min_length=1)
 

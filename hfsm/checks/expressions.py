@@ -40,7 +40,7 @@ def check_expressions(ctx: CheckContext, mf: MachineFile) -> None:
         for i, branch in enumerate(choice.choose):
             if isinstance(branch, IfBranch):
                 try:
-                    compile_expr(branch.if_, with_vars)
+                    compile_expr(branch.condition, with_vars)
                 except ExprSyntaxError as exc:
                     ctx.error(mf, ("states", name, "choose", i, "if"), "E314", str(exc))
 

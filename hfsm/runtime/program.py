@@ -11,7 +11,7 @@ from hfsm.builtins import BUILTINS
 from hfsm.checks.context import machine_spec
 from hfsm.expr import Fn, Names, compile_expr
 from hfsm.library import MachineFile
-from hfsm.model import CallState, IfBranch, Machine
+from hfsm.model import CallState, ChoiceState, IfBranch, Machine
 from hfsm.primitive import Primitive
 from hfsm.registry import Registry
 from hfsm.spec import BehaviourSpec, coerce, type_ok
@@ -130,10 +130,10 @@ class Program:
             rs.error_target = any_error
             if isinstance(state, CallState):
                 self._call_state(rs, state, names, target, any_msgs, set(m.receives))
-            else:
+            elif isinstance(state, ChoiceState):
                 rs.is_choice = True
                 rs.branches = [
-                    (compile_expr(b.if_, names), b.if_, target(b.then))
+                    (compile_expr(b.condition, names), b.condition, target(b.then))
                     if isinstance(b, IfBranch)
                     else (None, "else", target(b.else_))
                     for b in state.choose
