@@ -86,6 +86,7 @@ class AgentResult:
     outcome: str | None
     outputs: dict[str, Any]
     time: float
+    failed: str | None = None  # the reason, when the agent failed (SPEC 15)
 
 
 class Agent:
@@ -100,6 +101,7 @@ class Agent:
         self.entries = 0
         self.started = False
         self.result: AgentResult | None = None
+        self.failed: str | None = None  # the reason, once a world or --fail has failed it
 
     def path(self, level: int) -> list[str]:
         return [self.top, *(f.state.name for f in self.stack[: level + 1])]

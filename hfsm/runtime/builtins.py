@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 from hfsm.names import RESERVED_MESSAGES, is_name
 from hfsm.runtime.agent import Agent, Event, Frame
+from hfsm.runtime.barrier import start_barrier
 
 if TYPE_CHECKING:
     from hfsm.runtime.engine import Engine
@@ -93,4 +94,5 @@ STARTERS = {
     "send": start_send,
     "set": start_set,
     "log": start_log,
+    "barrier": start_barrier,
 }

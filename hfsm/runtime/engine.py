@@ -11,12 +11,13 @@ from typing import Any
 from hfsm.expr import ExprValueError
 from hfsm.primitive import Message
 from hfsm.runtime.agent import Agent, AgentResult, Event, Frame
+from hfsm.runtime.barrier import Team
 from hfsm.runtime.builtins import STARTERS
 from hfsm.runtime.primitives import PrimitiveActivity, RunContext
 from hfsm.runtime.program import RMachine, RState, resolve_params, span_ticks, timer_ticks
 from hfsm.spec import is_finite_number
 from hfsm.trace import TraceSink
-from hfsm.world import World
+from hfsm.world import NOTICE, World
 
 MAX_ENTRIES = 1000
 
@@ -41,6 +42,7 @@ class Engine:
         self._time = (0, 0.0)  # (tick, seconds) of the last time asked for
         self.running = len(agents)  # agents whose top machine has not ended
         self.spans: dict[float, int] = {}  # seconds -> ticks, for spans seen before
+        self.team = Team(self)
 
     @property
     def time(self) -> float:
@@ -291,11 +293,11 @@ class Engine:
             ticks = self.spans[seconds] = span_ticks(seconds, self.dt)
         return ticks
 
-    def stop(self, agent: Agent) -> None:
+    def stop(self, agent: Agent, reason: str = "stopped") -> None:
         """End an agent that has not ended: cancel what runs, close its trace."""
         if not agent.started:
             return
-        self._cancel_below(agent, -1, "stopped")
+        self._cancel_below(agent, -1, reason)
         self.emit(agent, [agent.top], "exit", outcome=None)
 
     def _end_agent(self, agent: Agent, event: Event) -> None:
@@ -328,7 +330,10 @@ class Engine:
     def deliver(self, messages: list[Message]) -> None:
         for message in messages:
             agent = self.by_name.get(message.to)
-            if agent is None:
+            if agent is None or agent.failed is not None:
+                continue  # lost: nobody hears it
+            if message.name == NOTICE:
+                self.team.receive(message)
                 continue
             agent.mailbox.append(message)
             path = agent.path(len(agent.stack) - 1) if agent.stack else [agent.top]
