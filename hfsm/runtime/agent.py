@@ -8,7 +8,9 @@ from typing import Any, Protocol
 
 from hfsm.expr import Scope
 from hfsm.primitive import Message
+from hfsm.runtime.live import Clock, FrameLive, Inputs
 from hfsm.runtime.program import RMachine, RState
+from hfsm.world import World
 
 
 class Event:
@@ -50,27 +52,31 @@ class Frame:
     """One running machine: its memory, its current state and its timers."""
 
     __slots__ = (
-        "_scope", "activity", "agent", "deadline", "entered", "machine", "params", "state",
-        "state_deadline", "vars",
+        "_scope", "activity", "agent", "attempt", "clock", "deadline", "entered", "machine", "params",
+        "started", "state", "state_deadline", "vars",
     )  # fmt: skip
 
-    def __init__(self, machine: RMachine, params: dict[str, Any], agent: str) -> None:
+    def __init__(self, machine: RMachine, params: dict[str, Any], agent: Agent, clock: Clock) -> None:
         self.machine = machine
         self.params = params
         self.vars = machine.fresh_vars() if machine.var_init else {}
         self.agent = agent
+        self.clock = clock
         self._scope: Scope | None = None
         self.state: RState = machine.initial  # type: ignore[assignment]
         self.deadline: int | None = None
         self.state_deadline: int | None = None
+        self.started = clock.tick
         self.entered = 0
+        self.attempt = 1
         self.activity: Activity | None = None
 
     @property
     def scope(self) -> Scope:
         """What expressions read; made on first use, since most frames never evaluate one."""
         if self._scope is None:
-            self._scope = Scope(self.params, self.vars, self.agent)
+            live = FrameLive(self, self.clock, self.agent.inputs)
+            self._scope = Scope(self.params, self.vars, self.agent.name, live)
         return self._scope
 
 
@@ -90,8 +96,9 @@ class AgentResult:
 
 
 class Agent:
-    def __init__(self, name: str, top: str, robot: Any, seed: int) -> None:
+    def __init__(self, name: str, top: str, robot: Any, seed: int, world: World) -> None:
         self.name = name
+        self.inputs = Inputs(world, name)
         self.top = top
         self.robot = robot
         self.rng = random.Random(f"{seed}:{name}")

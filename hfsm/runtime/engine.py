@@ -220,7 +220,7 @@ class Engine:
     def _call(self, agent: Agent, state: RState, frame: Frame, params: dict[str, Any]) -> Event | None:
         kind = state.kind
         if kind == "machine":
-            agent.stack.append(Frame(state.callee, params, agent.name))  # type: ignore[arg-type]
+            agent.stack.append(Frame(state.callee, params, agent, self))  # type: ignore[arg-type]
             return self._run_new_machine(agent)
         if kind == "primitive":
             ctx = RunContext(self, agent, state.do)
@@ -234,7 +234,7 @@ class Engine:
         return event
 
     def _start_machine(self, agent: Agent, machine: RMachine, params: dict[str, Any]) -> Event | None:
-        agent.stack.append(Frame(machine, params, agent.name))
+        agent.stack.append(Frame(machine, params, agent, self))
         return self._run_new_machine(agent)
 
     def _run_new_machine(self, agent: Agent) -> Event | None:

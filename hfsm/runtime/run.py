@@ -39,7 +39,7 @@ class RunOptions:
 
 
 def run(program: Program, world: World, options: RunOptions, trace: TraceSink | None = None) -> RunResult:
-    agents = [Agent(n, options.top, None, options.seed) for n in options.agents]
+    agents = [Agent(n, options.top, None, options.seed, world) for n in options.agents]
     world.start([a.name for a in agents], program.dt)
     for agent in agents:
         agent.robot = world.handle(agent.name)
