@@ -10,17 +10,18 @@ from typing import TYPE_CHECKING, Any
 
 from hfsm.names import did_you_mean
 from hfsm.primitive import Message
-from hfsm.runtime.agent import Agent, Event, Frame
+from hfsm.runtime.agent import Agent, Event, Frame, Region
 from hfsm.world import NOTICE
 
 if TYPE_CHECKING:
-    from hfsm.runtime.engine import Engine
+    from hfsm.runtime.core import Core
+    from hfsm.runtime.host import Host
 
 
 class Team:
     """What every agent knows of barriers: its own rounds, the highest round heard per name and sender."""
 
-    def __init__(self, engine: Engine) -> None:
+    def __init__(self, engine: Core) -> None:
         self.engine = engine
         self.order = {a.name: i for i, a in enumerate(engine.agents)}
         self.rounds: dict[str, dict[str, int]] = {a.name: {} for a in engine.agents}
@@ -115,26 +116,28 @@ class Barrier:
                 team.post(self.agent, other, self.name, self.round, answer=False)
         return None
 
-    def cancel(self) -> None:
+    def cancel(self) -> str:
         if self in self.team.waiting:
             self.team.waiting.remove(self)
+        return ""
 
 
-def start_barrier(engine: Engine, agent: Agent, frame: Frame, params: dict[str, Any]) -> Barrier | Event:
+def start_barrier(
+    host: Host, agent: Agent, frame: Frame, params: dict[str, Any], where: Frame | Region
+) -> Barrier | Event:
     name, named, at_least = params["name"], params["agents"], params["at_least"]
-    team: Team = engine.team
-    problem = _problem(engine, agent.name, named, at_least)
+    team = host.team
+    problem = _problem(list(team.order), agent.name, named, at_least)
     if problem:
         return Event("error", error=f"barrier '{name}': {problem}")
     chosen = set(named) if named else {a for a in team.order if a != agent.name}
     members = sorted(chosen, key=team.order.__getitem__)
-    return Barrier(team, agent.name, name, members, at_least or len(members), engine.tick)
+    return Barrier(team, agent.name, name, members, at_least or len(members), host.tick)
 
 
-def _problem(engine: Engine, me: str, named: list[Any], at_least: int) -> str:
-    agents = list(engine.by_name)
+def _problem(agents: list[str], me: str, named: list[Any], at_least: int) -> str:
     for other in named:
-        if not isinstance(other, str) or other not in engine.by_name:
+        if not isinstance(other, str) or other not in agents:
             hint = did_you_mean(other, agents) if isinstance(other, str) else ""
             return f"no agent named {other!r}" + (hint or f" (agents: {', '.join(agents)})")
         if other == me:

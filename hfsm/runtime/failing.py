@@ -10,7 +10,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from hfsm.runtime.agent import Agent, AgentResult
+from hfsm.runtime.agent import Agent, AgentResult, leaves
 from hfsm.runtime.program import span_ticks
 
 if TYPE_CHECKING:
@@ -58,7 +58,7 @@ def fail(engine: Engine, agent: Agent, reason: str) -> None:
         return
     agent.failed = reason
     agent.mailbox.clear()
-    path = agent.path(len(agent.stack) - 1) if agent.stack else [agent.top]
+    path = next(leaves(agent.root)).path() if agent.root is not None else [agent.top]
     engine.emit(agent, path, "failed", reason=reason)
     if agent.result is not None:
         return  # it had ended: its result stands, and from now on it no longer answers
