@@ -7,13 +7,14 @@ through the sim's radio (latency, loss) into the engine's mailboxes.
 from __future__ import annotations
 
 import sys
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
 from hfsm import located
 from hfsm.errors import UsageError
 from hfsm.primitive import Message
+from hfsm.world import NO_INPUTS, InputSpec
 from hfsm.yamlio import read_mapping
 from sim import Robot, Scenario, World, resolve
 
@@ -58,6 +59,12 @@ class SimWorld:
 
     def handle(self, agent: str) -> Robot:
         return self.world.robots[agent]
+
+    def inputs(self) -> Mapping[str, InputSpec]:
+        return NO_INPUTS
+
+    def read_input(self, agent: str, name: str, tick: int) -> Any:
+        raise KeyError(f"world 'sim' declares no input '{name}'")
 
     def post(self, message: Message) -> None:
         self.world.radio.send(message.sender, message.to, message, message.sent_tick * self.dt)

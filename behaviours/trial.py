@@ -68,6 +68,14 @@ def run_trial(spec: TrialSpec) -> TrialResult:
     return TrialResult(spec, outcomes, result.time, result.error, score, seconds, calls, wall)
 
 
+def run_trial_dict(spec: TrialSpec) -> dict[str, Any]:
+    """`run_trial` as plain data, its prints sent to stderr: what sweep workers run."""
+    from hfsm.cli.quiet import stdout_to_stderr
+
+    with stdout_to_stderr():
+        return run_trial(spec).as_dict()
+
+
 def _recorder(video: str | None) -> Any:
     if not video:
         return None

@@ -7,10 +7,12 @@ pybullet) is imported only when a sim world is made.
 from __future__ import annotations
 
 import argparse
+from collections.abc import Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from hfsm.errors import UsageError
+from hfsm.world import NO_INPUTS, InputSpec
 
 if TYPE_CHECKING:
     from behaviours.simworld import SimWorld
@@ -20,6 +22,9 @@ DEFAULT_SCENARIO = "opposite_long_side"
 
 class SimWorldFactory:
     name = "sim"
+
+    def inputs(self) -> Mapping[str, InputSpec]:
+        return NO_INPUTS
 
     def add_arguments(self, group: argparse._ArgumentGroup) -> None:
         group.add_argument(

@@ -6,11 +6,13 @@ Nothing reaches `eval`. Names are checked when the file is loaded; values when t
 from __future__ import annotations
 
 import ast
+import io
 import math
 import operator
+import tokenize
 from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Protocol
 
 from hfsm.names import did_you_mean
 
@@ -23,27 +25,79 @@ class ExprValueError(Exception):
     """An expression that failed while running: becomes the event `error`."""
 
 
+class Live(Protocol):
+    """What changes while a state runs (SPEC 12, 13): read only when an expression asks."""
+
+    def state_time(self) -> float: ...
+
+    def state_attempt(self) -> int: ...
+
+    def machine_time(self) -> float: ...
+
+    def input(self, name: str) -> Any: ...
+
+
+class _Nowhere:
+    """The live values of a scope outside any running state: reading one is a run-time error."""
+
+    def state_time(self) -> float:
+        raise ExprValueError("'state.time' cannot be read here")
+
+    def state_attempt(self) -> int:
+        raise ExprValueError("'state.attempt' cannot be read here")
+
+    def machine_time(self) -> float:
+        raise ExprValueError("'machine.time' cannot be read here")
+
+    def input(self, name: str) -> Any:
+        raise ExprValueError(f"'in.{name}' cannot be read here")
+
+
+NOWHERE: Live = _Nowhere()
+
+
 @dataclass(slots=True)
 class Scope:
     params: Mapping[str, Any]
     vars: Mapping[str, Any]
     agent: str
+    live: Live = NOWHERE
 
 
 Fn = Callable[[Scope], Any]
 
+_IN = "__in__"  # what `in.x` reads as once tokenized: `in` is a Python keyword
+_ROOTS = ("params", "vars", "agent", "state", "machine", _IN)
+_LIVE = {"state": ("time", "attempt"), "machine": ("time",)}
+
 
 @dataclass(frozen=True)
 class Names:
-    """What an expression may refer to at the place it stands."""
+    """What an expression may refer to at the place it stands.
+
+    `state`: whether `state.time`/`state.attempt` may be read; `machine_time`: `machine.time`;
+    `inputs`: the inputs the run's world declares, or None to accept any `in.x` (checked elsewhere).
+    """
 
     params: Collection[str]
     vars: Collection[str] | None  # None: `vars` may not be read here
+    state: bool = True
+    machine_time: bool = True
+    inputs: Collection[str] | None = None
 
     def check(self, root: str, attr: str) -> None:
         if root == "agent":
             if attr != "id":
                 raise ExprSyntaxError(f"unknown name 'agent.{attr}'; only 'agent.id' exists")
+            return
+        if root in _LIVE:
+            self._check_live(root, attr)
+            return
+        if root == _IN:
+            if self.inputs is not None and attr not in self.inputs:
+                declared = ", ".join(sorted(self.inputs)) or "none"
+                hint = did_you_mean(attr, self.inputs)
+                raise ExprSyntaxError(f"unknown input 'in.{attr}' (the world declares {declared}){hint}")
             return
         pool = self.params if root == "params" else self.vars
         if pool is None:
@@ -51,6 +105,21 @@ class Names:
         if attr not in pool:
             kind = "param" if root == "params" else "variable"
             raise ExprSyntaxError(f"unknown {kind} '{attr}'{did_you_mean(attr, pool)}")
+
+    def _check_live(self, root: str, attr: str) -> None:
+        known = _LIVE[root]
+        if attr not in known:
+            close = did_you_mean(attr, known)
+            full = [f"'{root}.{k}'" for k in known]
+            hint = close.replace("'", f"'{root}.", 1) if close else f"; only {' and '.join(full)}"
+            raise ExprSyntaxError(f"unknown name '{root}.{attr}'{hint}")
+        if root == "state" and not self.state:
+            raise ExprSyntaxError(
+                f"'state.{attr}' cannot be read here; only in a state's with, timer and watch, "
+                "the machine's watch, and a choice's if"
+            )
+        if root == "machine" and not self.machine_time:
+            raise ExprSyntaxError("'machine.time' cannot be read in the machine's own timer")
 
 
 _BIN: dict[type, Callable[[Any, Any], Any]] = {
@@ -140,21 +209,33 @@ class _Compiler:
         if node.id in _LITERAL_NAMES:
             value = _LITERAL_NAMES[node.id]
             return lambda s: value
-        if node.id in ("params", "vars", "agent"):
-            raise ExprSyntaxError(f"'{node.id}' alone is not a value; write {node.id}.NAME")
-        hint = did_you_mean(node.id, ["true", "false", "null", "params", "vars", "agent"])
+        if node.id in _ROOTS:
+            shown = "in" if node.id == _IN else node.id
+            raise ExprSyntaxError(f"'{shown}' alone is not a value; write {shown}.NAME")
+        hint = did_you_mean(node.id, ["true", "false", "null", "params", "vars", "agent", "state", "machine"])
         raise ExprSyntaxError(f"unknown name '{node.id}'{hint}")
 
     def c_Attribute(self, node: ast.Attribute) -> Fn:
-        if not isinstance(node.value, ast.Name) or node.value.id not in ("params", "vars", "agent"):
-            raise ExprSyntaxError(f"'{_snippet(node)}': only params.X, vars.X and agent.id")
+        if not isinstance(node.value, ast.Name) or node.value.id not in _ROOTS:
+            raise ExprSyntaxError(
+                f"'{_snippet(node)}': only params.X, vars.X, in.X, agent.id, state.time, state.attempt "
+                "and machine.time"
+            )
         root, attr = node.value.id, node.attr
         self.names.check(root, attr)
         if root == "agent":
             return lambda s: s.agent
         if root == "params":
             return lambda s: s.params[attr]
-        return lambda s: s.vars[attr]
+        if root == "vars":
+            return lambda s: s.vars[attr]
+        if root == _IN:
+            return lambda s: s.live.input(attr)
+        if root == "machine":
+            return lambda s: s.live.machine_time()
+        if attr == "time":
+            return lambda s: s.live.state_time()
+        return lambda s: s.live.state_attempt()
 
     def c_Subscript(self, node: ast.Subscript) -> Fn:
         value, index = self.compile(node.value), self.compile(node.slice)
@@ -275,16 +356,71 @@ def _any(parts: list[Fn], s: Scope) -> Any:
 
 
 def _snippet(node: ast.AST) -> str:
-    return ast.unparse(node)
+    return ast.unparse(node).replace(f"{_IN}.", "in.")
+
+
+_OPERANDS = (tokenize.NUMBER, tokenize.STRING)
+
+
+def _inputs_renamed(source: str) -> str:
+    """`in.x` as `__in__.x`, where `in` stands as an operand (not the operator `a in b`)."""
+    if "in" not in source:
+        return source
+    try:
+        tokens = [t for t in tokenize.generate_tokens(io.StringIO(source).readline) if t.type != tokenize.NL]
+    except (tokenize.TokenError, SyntaxError, IndentationError):
+        return source  # ast.parse reports it
+    lines = source.splitlines(keepends=True)
+    starts = [0]
+    for line in lines:
+        starts.append(starts[-1] + len(line))
+    cuts = []
+    for i, tok in enumerate(tokens):
+        if tok.type == tokenize.NAME and tok.string == _IN:
+            raise ExprSyntaxError(f"unknown name '{_IN}'")
+        if tok.string != "in" or i + 1 >= len(tokens) or tokens[i + 1].string != ".":
+            continue
+        before = tokens[i - 1] if i else None
+        operand_before = before is not None and (
+            before.type in _OPERANDS
+            or before.string in (")", "]", "}")
+            or (before.type == tokenize.NAME and before.string not in _KEYWORDS)
+        )
+        if not operand_before:
+            cuts.append(starts[tok.start[0] - 1] + tok.start[1])
+    for at in reversed(cuts):
+        source = source[:at] + _IN + source[at + 2 :]
+    return source
+
+
+_KEYWORDS = {"and", "or", "not", "in", "if", "else", "is", "lambda"}
 
 
 def compile_expr(source: str, names: Names) -> Fn:
     """Compile a bare expression; raise ExprSyntaxError with a readable message."""
+    text = _inputs_renamed(source.strip())
     try:
-        tree = ast.parse(source.strip(), mode="eval")
+        tree = ast.parse(text, mode="eval")
     except SyntaxError as exc:
         raise ExprSyntaxError(f"bad expression '{source}': {exc.msg}") from None
     return _Compiler(names).compile(tree.body)
+
+
+def reads(source: str) -> set[str]:
+    """The dotted names an expression reads (`vars.n`, `state.time`, `in.x`); empty if it does not parse."""
+    try:
+        tree = ast.parse(_inputs_renamed(source.strip()), mode="eval")
+    except (SyntaxError, ExprSyntaxError):
+        return set()
+    found = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id in _ROOTS:
+            root = "in" if node.value.id == _IN else node.value.id
+            found.add(f"{root}.{node.attr}")
+    return found
+
+
+TIMED = frozenset({"state.time", "machine.time"})
 
 
 def format_number(value: float) -> str:

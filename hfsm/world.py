@@ -7,13 +7,26 @@ the `hfsm.worlds` entry-point group (a `WorldFactory`), so hfsm never imports it
 from __future__ import annotations
 
 import argparse
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Protocol
 
 from hfsm.primitive import Message
 
 WORLDS_GROUP = "hfsm.worlds"
+
+
+@dataclass(frozen=True)
+class InputSpec:
+    """An input a world declares (SPEC 12): machines read it as `in.NAME`."""
+
+    name: str
+    type: str  # int, float, bool, str, list or dict, as a param's type
+    doc: str  # what it is, with its unit
+
+
+NO_INPUTS: Mapping[str, InputSpec] = {}
 
 
 class World(Protocol):
@@ -30,6 +43,12 @@ class World(Protocol):
 
     def handle(self, agent: str) -> Any:
         """What primitives of that agent get as `ctx.robot`."""
+
+    def inputs(self) -> Mapping[str, InputSpec]:
+        """The inputs this world declares, by name."""
+
+    def read_input(self, agent: str, name: str, tick: int) -> Any:
+        """A declared input's value for `agent` at `tick` (the engine asks at most once a tick)."""
 
     def post(self, message: Message) -> None: ...
 
@@ -52,6 +71,9 @@ class WorldFactory(Protocol):
     name: str
 
     def add_arguments(self, group: argparse._ArgumentGroup) -> None: ...
+
+    def inputs(self) -> Mapping[str, InputSpec]:
+        """What its worlds declare, known before one is made (for `--check`)."""
 
     def create(self, args: argparse.Namespace, seed: int) -> World: ...
 
@@ -93,6 +115,12 @@ class NullWorld(PerfectRadio):
 
     def handle(self, agent: str) -> Any:
         return None
+
+    def inputs(self) -> Mapping[str, InputSpec]:
+        return NO_INPUTS
+
+    def read_input(self, agent: str, name: str, tick: int) -> Any:
+        raise KeyError(f"world 'none' declares no input '{name}'")
 
     def advance(self, tick: int) -> None:
         pass

@@ -11,49 +11,51 @@ from __future__ import annotations
 
 import argparse
 import json
-import multiprocessing
 import sys
 import time
-from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 from typing import Any
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from behaviours.trial import TrialSpec, run_trial  # noqa: E402
+from behaviours.trial import TrialSpec, run_trial_dict  # noqa: E402
 from tools.paper.reference import SCENARIOS  # noqa: E402
 from tools.paper.report import write_report  # noqa: E402
+from tools.sweep import Shard, SweepError, merge_shards, run_sweep, shard_path, write_shard  # noqa: E402
 
 ABLATIONS = {"no_wait": {"waits": False}, "margin_5": {"margin": 0.05}}
 
 
-def _one(spec: TrialSpec) -> dict[str, Any]:
-    from hfsm.cli.quiet import stdout_to_stderr
-
-    with stdout_to_stderr():
-        return run_trial(spec).as_dict()
-
-
-def run_all(specs: list[TrialSpec], workers: int, label: str) -> list[dict[str, Any]]:
-    results: list[dict[str, Any]] = []
-    started = time.perf_counter()
-    context = multiprocessing.get_context("spawn")
-    with ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
-        futures = [pool.submit(_one, spec) for spec in specs]
-        for future in as_completed(futures):
-            results.append(future.result())
-            _progress(label, len(results), len(specs), time.perf_counter() - started)
-    print(file=sys.stderr)
+def run_all(specs: list[TrialSpec], args: argparse.Namespace, label: str) -> list[dict[str, Any]]:
+    """The trials of one campaign on the chosen executor, sorted for the report."""
+    results = run_sweep(run_trial_dict, specs, executor=args.executor, workers=args.workers, label=label)
     return sorted(results, key=lambda r: (r["spec"]["scenario"], r["spec"]["seed"]))
 
 
-def _progress(label: str, done: int, total: int, elapsed: float) -> None:
-    width = 30
-    filled = width * done // total
-    bar = "#" * filled + "-" * (width - filled)
-    end = "\r" if sys.stderr.isatty() else "\n"
-    print(f"{label:>10} [{bar}] {done}/{total} trials, {elapsed:.0f} s", end=end, file=sys.stderr, flush=True)
+def add_sweep_args(p: argparse.ArgumentParser) -> None:
+    """The options every campaign of tools/ shares: where trials run, and shards for batch queues."""
+    p.add_argument("--workers", type=int, default=2, help="local processes (with --executor local)")
+    p.add_argument("--executor", default="local", help="local, or dask://HOST:PORT for a Dask cluster")
+    p.add_argument("--shard", type=Shard.parse, help="run only shard I of N (I/N) and write it to --shards")
+    p.add_argument("--merge", action="store_true", help="write the report from the shards in --shards")
+    p.add_argument("--shards", type=Path, default=ROOT / "out" / "shards", help="folder of shard files")
+
+
+def campaign(specs: list[TrialSpec], args: argparse.Namespace, label: str) -> list[dict[str, Any]] | None:
+    """Run (or, with --shard, run part of and store; with --merge, read back) one campaign."""
+    if args.merge:
+        shards = sorted(args.shards.glob(f"{label}-*-of-*.jsonl"))
+        if not shards:
+            raise SweepError(f"no shards of '{label}' in {args.shards}")
+        results = merge_shards(shards)
+        return sorted(results, key=lambda r: (r["spec"]["scenario"], r["spec"]["seed"]))
+    if args.shard is not None:
+        part = run_sweep(run_trial_dict, specs, executor=args.executor, workers=args.workers,
+                         shard=args.shard, label=label)
+        write_shard(shard_path(args.shards, label, args.shard), part, len(specs))
+        return None
+    return run_all(specs, args, label)
 
 
 def specs_for(args: argparse.Namespace, params: dict[str, Any]) -> list[TrialSpec]:
@@ -69,7 +71,7 @@ def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--trials", type=int, default=10, help="seeded trials per configuration")
     p.add_argument("--seed", type=int, default=0, help="first seed")
-    p.add_argument("--workers", type=int, default=2)
+    add_sweep_args(p)
     p.add_argument("--scenarios", default="all", help="comma-separated names, or all")
     p.add_argument("--machine", type=Path, default=ROOT / "machines" / "move_furniture.yaml")
     p.add_argument("--max-time", type=float, default=2400.0, help="simulated seconds per trial")
@@ -78,10 +80,15 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--raw", type=Path, default=ROOT / "docs" / "results" / "trials.json")
     args = p.parse_args(argv)
     started = time.perf_counter()
-    runs = {"baseline": run_all(specs_for(args, {}), args.workers, "baseline")}
-    if not args.no_ablations:
-        for name, params in ABLATIONS.items():
-            runs[name] = run_all(specs_for(args, params), args.workers, name)
+    campaigns = {"baseline": {}, **({} if args.no_ablations else ABLATIONS)}
+    try:
+        runs = {name: campaign(specs_for(args, params), args, name) for name, params in campaigns.items()}
+    except SweepError as exc:
+        print(f"paper_bench: {exc}", file=sys.stderr)
+        return 2
+    if args.shard is not None:
+        print(f"wrote shard {args.shard.index}/{args.shard.count} to {args.shards}", file=sys.stderr)
+        return 0
     args.raw.parent.mkdir(parents=True, exist_ok=True)
     args.raw.write_text(json.dumps(runs, indent=1, default=str))
     command = " ".join(["tools/paper_bench.py", *(argv or sys.argv[1:])])

@@ -26,7 +26,8 @@ sys.path.insert(0, str(ROOT))
 from behaviours.trial import TrialSpec  # noqa: E402
 from tools.docsection import write_section  # noqa: E402
 from tools.paper.results import succeeded  # noqa: E402
-from tools.paper_bench import run_all  # noqa: E402
+from tools.paper_bench import add_sweep_args, campaign  # noqa: E402
+from tools.sweep import SweepError  # noqa: E402
 
 ROOM, LENGTH, WIDTH = 5.0, 0.8, 0.5
 
@@ -60,7 +61,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--seed", type=int, default=1000, help="seeds the draws and the runs")
     p.add_argument("--move-table", action="store_true")
     p.add_argument("--clearance", type=float, default=0.8)
-    p.add_argument("--workers", type=int, default=2)
+    add_sweep_args(p)
     p.add_argument("--out", type=Path, default=ROOT / "out" / "robustness")
     p.add_argument("--report", type=Path, help="also write the outcome as a section of this Markdown file")
     args = p.parse_args(argv)
@@ -71,7 +72,14 @@ def main(argv: list[str] | None = None) -> int:
         path = args.out / f"start{i:03d}{'-table' if args.move_table else ''}.yaml"
         path.write_text(yaml.safe_dump(draw(rng, args.move_table, args.clearance), sort_keys=False))
         specs.append(TrialSpec(str(ROOT / "machines" / "move_furniture.yaml"), str(path), args.seed + i))
-    trials = run_all(specs, args.workers, "held-out")
+    label = "held-out-table" if args.move_table else "held-out"
+    try:
+        trials = campaign(specs, args, label)
+    except SweepError as exc:
+        print(f"robustness: {exc}", file=sys.stderr)
+        return 2
+    if trials is None:
+        return 0
     ok = [t for t in trials if succeeded(t)]
     times = [t["time"] for t in ok]
     mean = f", mean {statistics.fmean(times) / 60:.1f} min, max {max(times) / 60:.1f} min" if times else ""

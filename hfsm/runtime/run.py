@@ -7,7 +7,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from hfsm.runtime.agent import Agent, AgentResult, BehaviourStats
+from hfsm.runtime.agent import Agent, AgentResult, BehaviourStats, Frame, activities, frames
 from hfsm.runtime.engine import Engine, FatalError
 from hfsm.runtime.program import Program, span_ticks
 from hfsm.trace import TraceSink
@@ -37,7 +37,7 @@ class RunOptions:
 
 
 def run(program: Program, world: World, options: RunOptions, trace: TraceSink | None = None) -> RunResult:
-    agents = [Agent(n, options.top, None, options.seed) for n in options.agents]
+    agents = [Agent(n, options.top, None, options.seed, world) for n in options.agents]
     world.start([a.name for a in agents], program.dt)
     for agent in agents:
         agent.robot = world.handle(agent.name)
@@ -84,24 +84,38 @@ def _next_tick(engine: Engine) -> int | None:
     now = engine.tick
     best = engine.world.next_delivery() or sys.maxsize
     for agent in engine.agents:
-        if agent.result is not None or not agent.stack:
+        if agent.result is not None or agent.root is None:
             continue
-        activity = agent.stack[-1].activity
-        if activity is not None and activity.deadline is not None and now < activity.deadline < best:
-            best = activity.deadline
-        for frame in agent.stack:
-            for deadline in (frame.deadline, frame.state_deadline):
-                if deadline is not None and now < deadline < best:
-                    best = deadline
+        best = min(best, _wake(agent, now, best))
         if best == now + 1:
             break
     return None if best == sys.maxsize else best
 
 
+def _wake(agent: Agent, now: int, best: int) -> int:
+    """The earliest tick after `now` in which something of `agent` is due (a timer, a wait, a watch)."""
+    root = agent.root
+    assert root is not None
+    if root.below is not None and root.below.__class__ is not Frame and root.below.__class__ is not list:
+        deadline = root.below.deadline  # one machine running one behaviour: the common case, kept quick
+        if deadline is not None and now < deadline < best:
+            best = deadline
+    else:
+        for activity in activities(root):
+            deadline = activity.deadline
+            if deadline is not None and now < deadline < best:
+                best = deadline
+    for frame in frames(root):
+        if frame.state.timed:
+            return now + 1
+        for deadline in (frame.deadline, frame.state_deadline, frame.retry_at):
+            if deadline is not None and now < deadline < best:
+                best = deadline
+    return best
+
+
 def _where(agents: list[Agent]) -> str:
-    return "; ".join(
-        f"{a.name} in {'/'.join(a.path(len(a.stack) - 1))}" for a in agents if a.result is None and a.stack
-    )
+    return "; ".join(f"{a.name} in {a.where()}" for a in agents if a.result is None and a.root is not None)
 
 
 def _stop_all(engine: Engine, agents: list[Agent]) -> None:
