@@ -8,7 +8,7 @@ from typing import Literal
 
 import networkx as nx
 
-from hfsm.model import CallState, ChoiceState, IfBranch, JoinRule, Machine, ParallelState, Watch
+from hfsm.model import CallState, ChoiceState, IfBranch, JoinRule, Machine, Watch, state_calls
 from hfsm.spec import BehaviourSpec
 
 ArcKind = Literal[
@@ -116,9 +116,7 @@ def call_graph(machines: Mapping[str, Machine]) -> nx.DiGraph:
     for name, m in machines.items():
         g.add_node(name)
         for state_name, state in m.states.items():
-            dos = [state.do] if isinstance(state, CallState) else []
-            dos += [r.do for r in state.parallel.values()] if isinstance(state, ParallelState) else []
-            for do in dos:
+            for _, do in state_calls(state_name, state):
                 if g.has_edge(name, do):
                     g.edges[name, do]["states"].append(state_name)
                 else:

@@ -28,18 +28,44 @@ FLOOR_TOLERANCE = 0.004
 LOAD_TAU = 0.05
 
 
+Vec = tuple[float, float, float]
+Mat = tuple[float, float, float, float, float, float, float, float, float]  # row-major 3x3
+ZERO: Vec = (0.0, 0.0, 0.0)
+
+
+def _apply(origin: Vec, m: Mat, v: Vec) -> Vec:
+    """origin + m @ v, on tuples: numpy costs more than the arithmetic on 3-vectors at 120 Hz."""
+    return (origin[0] + m[0] * v[0] + m[1] * v[1] + m[2] * v[2],
+            origin[1] + m[3] * v[0] + m[4] * v[1] + m[5] * v[2],
+            origin[2] + m[6] * v[0] + m[7] * v[1] + m[8] * v[2])
+
+
+def _local(origin: Vec, m: Mat, point: Vec) -> Vec:
+    """m.T @ (point - origin): a world point in the frame (origin, m)."""
+    x, y, z = point[0] - origin[0], point[1] - origin[1], point[2] - origin[2]
+    return (m[0] * x + m[3] * y + m[6] * z, m[1] * x + m[4] * y + m[7] * z, m[2] * x + m[5] * y + m[8] * z)
+
+
+def _sub(a: Vec, b: Vec) -> Vec:
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
 class Arms(Protocol):
     def _arms_active(self) -> bool: ...
     def _arms_lowering(self) -> bool: ...
 
 
+Pose = tuple[Vec, Mat]
+Grip = tuple[int, Vec, int]  # constraint id, anchor in the table's frame, hand index
+
+
 @dataclass
 class _Hands:
     body: RobotBody
-    grips: list[tuple[int, np.ndarray, int]] = field(default_factory=list)
+    grips: list[Grip] = field(default_factory=list)
     previous: list[float] | None = None
-    load: np.ndarray = field(default_factory=lambda: np.zeros(3))
-    give: np.ndarray = field(default_factory=lambda: np.zeros((2, 3)))
+    load: Vec = ZERO
+    give: list[Vec] = field(default_factory=lambda: [ZERO, ZERO])
 
 
 class Lifting:
@@ -64,11 +90,11 @@ class Lifting:
         summed and low-passed, and each hand's give (m; rows: left hand, right hand), how far
         its grip pulls it off the posture the arm holds. Zeros when they hold nothing."""
         hands = self._hands[name]
-        return hands.load.copy(), hands.give.copy()
+        return np.array(hands.load), np.array(hands.give)
 
     def update(self) -> None:
         """Call after every physics step."""
-        table: tuple[np.ndarray, np.ndarray] | None = None
+        table: Pose | None = None
         for name, hands in self._hands.items():
             if not hands.grips and not self._arms[name]._arms_active():
                 hands.previous = None
@@ -84,39 +110,38 @@ class Lifting:
             self._check_slip(table[1])
         self._feel()
 
-    def _measure_give(self, hands: _Hands, points: list[np.ndarray],
-                      table: tuple[np.ndarray, np.ndarray]) -> None:
-        hands.give = np.zeros((2, 3))
+    def _measure_give(self, hands: _Hands, points: list[Vec], table: Pose) -> None:
+        hands.give = [ZERO, ZERO]
         for _, anchor, index in hands.grips:
-            hands.give[index] = table[0] + table[1] @ anchor - points[index]
+            hands.give[index] = _sub(_apply(table[0], table[1], anchor), points[index])
 
     def _feel(self) -> None:
         for hands in self._hands.values():
-            force = np.zeros(3)
-            for grip in hands.grips:
-                force += p.getConstraintState(grip[0], physicsClientId=self._cid)[:3]
             if not hands.grips:
-                hands.give = np.zeros((2, 3))
-                hands.load = force
-            else:
-                hands.load = hands.load + self._smoothing * (force - hands.load)
+                hands.give = [ZERO, ZERO]
+                hands.load = ZERO
+                continue
+            fx = fy = fz = 0.0
+            for grip in hands.grips:
+                f = p.getConstraintState(grip[0], physicsClientId=self._cid)
+                fx, fy, fz = fx + f[0], fy + f[1], fz + f[2]
+            k, (lx, ly, lz) = self._smoothing, hands.load
+            hands.load = (lx + k * (fx - lx), ly + k * (fy - ly), lz + k * (fz - lz))
 
-    def _table_pose(self) -> tuple[np.ndarray, np.ndarray]:
+    def _table_pose(self) -> Pose:
         pos, orn = p.getBasePositionAndOrientation(self._table.body, physicsClientId=self._cid)
-        return np.asarray(pos), np.array(p.getMatrixFromQuaternion(orn)).reshape(3, 3)
+        return pos, p.getMatrixFromQuaternion(orn)
 
-    def _hand_points(self, body: RobotBody) -> list[np.ndarray]:
+    def _hand_points(self, body: RobotBody) -> list[Vec]:
         g = body.geometry
         state = p.getLinkState(body.body, ARMS, physicsClientId=self._cid)
-        rot = np.array(p.getMatrixFromQuaternion(state[5])).reshape(3, 3)
-        origin = np.asarray(state[4])
-        return [origin + rot @ np.array([g.hand_x, sy * g.hand_y, 0.0]) for sy in (1, -1)]
+        rot, origin = p.getMatrixFromQuaternion(state[5]), state[4]
+        return [_apply(origin, rot, (g.hand_x, sy * g.hand_y, 0.0)) for sy in (1, -1)]
 
-    def _try_grip(self, hands: _Hands, points: list[np.ndarray],
-                  table: tuple[np.ndarray, np.ndarray]) -> None:
+    def _try_grip(self, hands: _Hands, points: list[Vec], table: Pose) -> None:
         spec, com_h = self._table.spec, self._table.com_height
-        locals_ = [table[1].T @ (pt - table[0]) for pt in points]
-        heights = [float(loc[2] + com_h) for loc in locals_]
+        locals_ = [_local(table[0], table[1], pt) for pt in points]
+        heights = [loc[2] + com_h for loc in locals_]
         previous, hands.previous = hands.previous, heights
         if previous is None:
             return
@@ -128,46 +153,45 @@ class Lifting:
             if under and before < level <= height:
                 self._grip(hands, index, loc)
 
-    def _grip(self, hands: _Hands, index: int, anchor: np.ndarray) -> None:
+    def _grip(self, hands: _Hands, index: int, anchor: Vec) -> None:
         g = hands.body.geometry
         p.changeDynamics(self._table.body, -1, activationState=p.ACTIVATION_STATE_WAKE_UP,
                          physicsClientId=self._cid)
         hand = [g.hand_x, (1 if index == 0 else -1) * g.hand_y, 0.0]
         cid = p.createConstraint(self._table.body, -1, hands.body.body, ARMS,
-                                 p.JOINT_POINT2POINT, [0, 0, 0], anchor.tolist(), hand,
+                                 p.JOINT_POINT2POINT, [0, 0, 0], list(anchor), hand,
                                  physicsClientId=self._cid)
         p.changeConstraint(cid, maxForce=g.hand_max_force, physicsClientId=self._cid)
         hands.grips.append((int(cid), anchor, index))
 
-    def _check_grips(self, name: str, hands: _Hands, points: list[np.ndarray],
-                     table: tuple[np.ndarray, np.ndarray]) -> None:
+    def _check_grips(self, name: str, hands: _Hands, points: list[Vec], table: Pose) -> None:
         for grip in list(hands.grips):
-            anchor_world = table[0] + table[1] @ grip[1]
-            if np.linalg.norm(anchor_world - points[grip[2]]) > STRETCH:
+            anchor_world = _apply(table[0], table[1], grip[1])
+            if math.dist(anchor_world, points[grip[2]]) > STRETCH:
                 self.dropped = self.dropped or not self._landed(points, table)
                 self._release(hands, grip)
         if hands.grips and self._arms[name]._arms_lowering() and self._landed(points, table):
             for grip in list(hands.grips):
                 self._release(hands, grip)
 
-    def _landed(self, points: list[np.ndarray], table: tuple[np.ndarray, np.ndarray]) -> bool:
+    def _landed(self, points: list[Vec], table: Pose) -> bool:
         """True if the two table feet nearest these hands are on the floor."""
         spec, com_h = self._table.spec, self._table.com_height
-        feet = [table[0] + table[1] @ np.array([sx * spec.length / 2, sy * spec.width / 2,
-                                                -com_h]) for sx in (1, -1) for sy in (1, -1)]
-        middle = (points[0] + points[1]) / 2
-        feet.sort(key=lambda foot: float(np.hypot(*(foot - middle)[:2])))
-        return bool(max(feet[0][2], feet[1][2]) < FLOOR_TOLERANCE)
+        feet = [_apply(table[0], table[1], (sx * spec.length / 2, sy * spec.width / 2, -com_h))
+                for sx in (1, -1) for sy in (1, -1)]
+        mx, my = (points[0][0] + points[1][0]) / 2, (points[0][1] + points[1][1]) / 2
+        feet.sort(key=lambda foot: math.hypot(foot[0] - mx, foot[1] - my))
+        return max(feet[0][2], feet[1][2]) < FLOOR_TOLERANCE
 
-    def _check_slip(self, rot: np.ndarray) -> None:
-        if math.acos(max(-1.0, min(1.0, float(rot[2, 2])))) <= self.slip:
+    def _check_slip(self, rot: Mat) -> None:
+        if math.acos(max(-1.0, min(1.0, rot[8]))) <= self.slip:
             return
         self.dropped = True
         for hands in self._hands.values():
             for grip in list(hands.grips):
                 self._release(hands, grip)
 
-    def _release(self, hands: _Hands, grip: tuple[int, np.ndarray, int]) -> None:
+    def _release(self, hands: _Hands, grip: Grip) -> None:
         p.removeConstraint(grip[0], physicsClientId=self._cid)
         hands.grips.remove(grip)
         hands.previous = None
