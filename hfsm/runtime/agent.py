@@ -144,6 +144,7 @@ class AgentResult:
     outcome: str | None
     outputs: dict[str, Any]
     time: float
+    failed: str | None = None  # the reason, when the agent failed (SPEC 15)
 
 
 class Agent:
@@ -159,6 +160,7 @@ class Agent:
         self.entries = 0
         self.started = False
         self.result: AgentResult | None = None
+        self.failed: str | None = None  # the reason, once a world or --fail has failed it
 
     def where(self) -> str:
         """Each innermost running state's path, for messages about an agent that has not ended."""

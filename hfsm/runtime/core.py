@@ -10,6 +10,7 @@ from __future__ import annotations
 from typing import Any
 
 from hfsm.runtime.agent import Agent, AgentResult, Event, Frame, Region
+from hfsm.runtime.barrier import Team
 from hfsm.runtime.program import span_ticks
 from hfsm.runtime.states import RState
 from hfsm.trace import TraceSink
@@ -38,6 +39,7 @@ class Core:
         self._time = (0, 0.0)  # (tick, seconds) of the last time asked for
         self.running = len(agents)  # agents whose top machine has not ended
         self.spans: dict[float, int] = {}  # seconds -> ticks, for spans seen before
+        self.team = Team(self)  # barriers (SPEC 14)
 
     @property
     def time(self) -> float:

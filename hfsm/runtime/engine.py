@@ -15,6 +15,7 @@ from hfsm.runtime.agent import Agent, Event, Frame, Region, leaves
 from hfsm.runtime.core import FatalError
 from hfsm.runtime.parallel import Parallel
 from hfsm.runtime.program import RMachine
+from hfsm.world import NOTICE
 
 __all__ = ["Engine", "FatalError"]
 
@@ -116,7 +117,10 @@ class Engine(Parallel):
     def deliver(self, messages: list[Message]) -> None:
         for message in messages:
             agent = self.by_name.get(message.to)
-            if agent is None:
+            if agent is None or agent.failed is not None:
+                continue  # lost: nobody hears it
+            if message.name == NOTICE:
+                self.team.receive(message)
                 continue
             agent.mailbox.append(message)
             if self.trace is not None:
