@@ -83,6 +83,9 @@ class SimWorld:
             self._next_progress += self.progress_every
             self._progress()
 
+    def failures(self, tick: int) -> Sequence[tuple[str, str]]:
+        return ()
+
     def _progress(self) -> None:
         minutes, seconds = divmod(self.world.time, 60)
         line = f"simulated {int(minutes):02d}:{seconds:04.1f}"

@@ -44,7 +44,13 @@ class SimWorldFactory:
             "--video",
             type=Path,
             metavar="FILE",
-            help="top-down video, .mp4 or .gif (default DIR/SCENARIO-seedN.mp4)",
+            help="video, .mp4 (H.264), .webm (VP9) or .gif (default DIR/SCENARIO-seedN.mp4)",
+        )
+        group.add_argument(
+            "--view",
+            choices=("top", "3d"),
+            default="top",
+            help="the video and final picture: a schematic from above (fast, default) or a lit 3-D view",
         )
         group.add_argument("--no-video", action="store_true", help="no video and no final picture")
         group.add_argument("--image-size", default="160x120", metavar="WxH", help="camera images")
@@ -72,7 +78,7 @@ class SimWorldFactory:
         recorder = None
         if video is not None:
             writable_folder(video.parent, "--video")
-            recorder = Recorder(video)
+            recorder = Recorder(video, view=args.view)
         world = World(
             scenario,
             seed,

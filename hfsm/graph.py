@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from hfsm import digraph
-from hfsm.model import CallState, ChoiceState, IfBranch, Machine
+from hfsm.model import CallState, ChoiceState, IfBranch, Machine, state_calls
 from hfsm.spec import BehaviourSpec
 
 ArcKind = Literal["outcome", "failure", "timeout", "message", "error", "choice", "else"]
@@ -77,9 +77,9 @@ def call_graph(machines: Mapping[str, Machine]) -> digraph.DiGraph:
     for name, m in machines.items():
         g.add_node(name)
         for state_name, state in m.states.items():
-            if isinstance(state, CallState):
-                if g.has_edge(name, state.do):
-                    g.edges[name, state.do]["states"].append(state_name)
+            for _, do in state_calls(state_name, state):
+                if g.has_edge(name, do):
+                    g.edges[name, do]["states"].append(state_name)
                 else:
-                    g.add_edge(name, state.do, states=[state_name])
+                    g.add_edge(name, do, states=[state_name])
     return g

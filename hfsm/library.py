@@ -8,7 +8,7 @@ from pathlib import Path
 from hfsm import located
 from hfsm.builtins import BUILTINS
 from hfsm.errors import Finding, UserError
-from hfsm.model import CallState, Machine
+from hfsm.model import Machine, state_calls
 from hfsm.names import did_you_mean
 from hfsm.registry import Registry
 from hfsm.yamlio import Document, read_mapping
@@ -111,7 +111,7 @@ class Library:
         return True
 
     def _callees(self, machine: MachineFile) -> list[str]:
-        names = {s.do for s in machine.model.states.values() if isinstance(s, CallState)}
+        names = {do for n, s in machine.model.states.items() for _, do in state_calls(n, s)}
         return sorted(n for n in names if n not in BUILTINS and n not in self.registry)
 
     def _resolve(self, caller: MachineFile, name: str) -> MachineFile | None:
@@ -124,7 +124,7 @@ class Library:
         else:
             message = f"unknown behaviour '{name}'{did_you_mean(name, self.known_names())}"
         for state_name, state in caller.model.states.items():
-            if isinstance(state, CallState) and state.do == name:
-                where = ("states", state_name, "do")
-                self.findings.append(caller.doc.finding(where, "E300", message))
+            for where, do in state_calls(state_name, state):
+                if do == name:
+                    self.findings.append(caller.doc.finding(where, "E300", message))
         return None

@@ -40,6 +40,7 @@ def condition_text(value: Condition) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
     return repr(value)
+Path = tuple[str, ...]
 Count = Annotated[int, Field(gt=0)] | Expr
 Delay = Annotated[float, Field(ge=0, allow_inf_nan=False)] | Expr
 
@@ -115,6 +116,15 @@ class ParallelState(Strict):
     on: dict[Name, Name] = Field(default_factory=dict, description="event -> state or outcome")
     watch: list[Watch] = Field(default_factory=list)
     doc: str | None = None
+
+
+def state_calls(name: str, state: CallState | ChoiceState | ParallelState) -> list[tuple[Path, str]]:
+    """What a state calls, each with the path of its `do` key (a parallel state: each region's)."""
+    if isinstance(state, CallState):
+        return [(("states", name, "do"), state.do)]
+    if isinstance(state, ParallelState):
+        return [(("states", name, "parallel", r, "do"), reg.do) for r, reg in state.parallel.items()]
+    return []
 
 
 class IfBranch(Strict):

@@ -1,58 +1,44 @@
 """Read YAML 1.2 (core schema) into plain values, keeping the position of every key and value.
 
 Why not a stock loader: PyYAML resolves YAML 1.1 (`on:` becomes True) and keeps the last of two
-duplicate keys; both must be errors or strings here. We let libyaml compose the node graph with a
-core-schema resolver, then build the values ourselves, collecting every problem with its position.
+duplicate keys; both must be errors or strings here. libyaml parses; `hfsm.yamlbuild` builds the
+values from its events, collecting every problem with its position. A file is read only when it
+is a regular file of at most MAX_BYTES, so a FIFO, a device or a huge file is refused at once.
 """
 
 from __future__ import annotations
 
-import math
-import re
+import gc
+import os
+import stat
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import yaml
-from yaml.nodes import MappingNode, Node, ScalarNode, SequenceNode
+from yaml import events as ev
 
 from hfsm.errors import Finding, UserError
+from hfsm.yamlbuild import MAX_DEPTH, MAX_EXPANDED, MAX_NODES, EventBuilder, Path_, Pos, TooBig
+from hfsm.yamlhints import hint
 
-Path_ = tuple[str | int, ...]
-Pos = tuple[int, int]
-MAX_NODES = 200_000
-CORE = "tag:yaml.org,2002:"
+__all__ = ["MAX_BYTES", "MAX_DEPTH", "MAX_EXPANDED", "MAX_NODES", "Document", "Path_", "Pos"]
 
-
-class _CoreResolver(yaml.resolver.BaseResolver):
-    """The YAML 1.2 core schema's implicit types, nothing else."""
+MAX_BYTES = 8 * 1024 * 1024
 
 
-for _tag, _regex, _first in (
-    ("bool", r"^(?:true|True|TRUE|false|False|FALSE)$", "tTfF"),
-    ("null", r"^(?:~|null|Null|NULL|)$", ["~", "n", "N", ""]),
-    ("int", r"^(?:[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+)$", "-+0123456789"),
-    (
-        "float",
-        r"^(?:[-+]?(?:\.[0-9]+|[0-9]+(?:\.[0-9]*)?)(?:[eE][-+]?[0-9]+)?"
-        r"|[-+]?\.(?:inf|Inf|INF)|\.(?:nan|NaN|NAN))$",
-        "-+0123456789.",
-    ),
-):
-    _CoreResolver.add_implicit_resolver(CORE + _tag, re.compile(_regex), list(_first))
-
-
-class _PyParser(yaml.reader.Reader, yaml.scanner.Scanner, yaml.parser.Parser, yaml.composer.Composer):
+class _PyParser(yaml.reader.Reader, yaml.scanner.Scanner, yaml.parser.Parser):
     """The pure-Python pipeline, used when PyYAML was built without libyaml."""
 
     def __init__(self, text: str) -> None:
         yaml.reader.Reader.__init__(self, text)
         yaml.scanner.Scanner.__init__(self)
         yaml.parser.Parser.__init__(self)
-        yaml.composer.Composer.__init__(self)
 
 
-def _parser_class() -> type:
+def _parser_class() -> Any:
     try:
         from yaml._yaml import CParser
     except ImportError:  # PyYAML built without libyaml
@@ -61,12 +47,6 @@ def _parser_class() -> type:
 
 
 _Parser: Any = _parser_class()
-
-
-class _Composer(_Parser, _CoreResolver):  # type: ignore[misc]
-    def __init__(self, text: str) -> None:
-        _Parser.__init__(self, text)
-        _CoreResolver.__init__(self)
 
 
 @dataclass
@@ -92,101 +72,17 @@ class Document:
         return Finding(self.file, line, col, code, message)
 
 
-def _mark(node: Node) -> Pos:
-    return (node.start_mark.line + 1, node.start_mark.column + 1)
 
-
-class _Builder:
-    def __init__(self, doc: Document) -> None:
-        self.doc = doc
-        self.errors: list[Finding] = []
-        self.count = 0
-
-    def error(self, node: Node, code: str, message: str) -> None:
-        line, col = _mark(node)
-        self.errors.append(Finding(self.doc.file, line, col, code, message))
-
-    def build(self, node: Node, path: Path_) -> Any:
-        self.count += 1
-        if self.count > MAX_NODES:
-            raise _TooBig(node)
-        self.doc.values.setdefault(path, _mark(node))
-        if isinstance(node, ScalarNode):
-            return self.scalar(node)
-        if isinstance(node, SequenceNode):
-            self.check_tag(node, "seq")
-            return [self.build(item, (*path, i)) for i, item in enumerate(node.value)]
-        assert isinstance(node, MappingNode)
-        self.check_tag(node, "map")
-        return self.mapping(node, path)
-
-    def check_tag(self, node: Node, kind: str) -> bool:
-        if node.tag == CORE + kind:
-            return True
-        self.error(node, "E102", f"tag '{node.tag}' is not allowed: machine files take plain YAML")
-        return False
-
-    def mapping(self, node: MappingNode, path: Path_) -> dict[Any, Any]:
-        out: dict[Any, Any] = {}
-        for key_node, value_node in node.value:
-            if not isinstance(key_node, ScalarNode):
-                self.error(key_node, "E100", "a key must be a plain scalar, not a list or mapping")
-                continue
-            if key_node.tag == CORE + "merge" or (key_node.value == "<<" and not key_node.style):
-                self.error(key_node, "E103", "merge keys ('<<') are not allowed")
-                continue
-            key = self.scalar(key_node)
-            if key in out:
-                self.error(key_node, "E101", f"duplicate key '{key}'")
-                continue
-            self.doc.keys[(*path, key)] = _mark(key_node)
-            out[key] = self.build(value_node, (*path, key))
-        return out
-
-    def scalar(self, node: ScalarNode) -> Any:
-        text = node.value
-        kind = node.tag.removeprefix(CORE)
-        try:
-            return _SCALARS[kind](text)
-        except KeyError:
-            self.check_tag(node, "str")
-        except ValueError:
-            self.error(node, "E100", f"'{text}' is not a valid {kind}")
-        return text
-
-
-def _int(text: str) -> int:
-    if text.startswith(("0o", "0x")):
-        return int(text[2:], 8 if text[1] == "o" else 16)
-    return int(text)
-
-
-def _float(text: str) -> float:
-    lowered = text.lower()
-    if lowered.endswith(".inf"):
-        return -math.inf if lowered.startswith("-") else math.inf
-    if lowered == ".nan":
-        return math.nan
-    return float(text)
-
-
-def _bool(text: str) -> bool:
-    if text.lower() not in ("true", "false"):
-        raise ValueError(text)
-    return text.lower() == "true"
-
-
-def _null(text: str) -> None:
-    if text not in ("", "~", "null", "Null", "NULL"):
-        raise ValueError(text)
-
-
-_SCALARS: dict[str, Any] = {"str": str, "int": _int, "float": _float, "bool": _bool, "null": _null}
-
-
-class _TooBig(Exception):
-    def __init__(self, node: Node) -> None:
-        self.node = node
+@contextmanager
+def collector_paused() -> Iterator[None]:
+    """Pause the cyclic garbage collector: reading creates many objects and no cycles to free."""
+    was_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if was_enabled:
+            gc.enable()
 
 
 def decode(raw: bytes, file: str) -> str:
@@ -202,42 +98,82 @@ def decode(raw: bytes, file: str) -> str:
 
 
 def parse_text(text: str, file: str) -> Document:
-    """Compose and build one YAML document; raise UserError with every problem found."""
+    """Parse and build one YAML document; raise UserError with every problem found."""
     doc = Document(file, None)
+    builder = EventBuilder(file)
+    parser = _Parser(text)
     try:
-        composer = _Composer(text)
-        try:
-            node = composer.get_single_node()
-        finally:
-            composer.dispose()
+        with collector_paused():
+            _drive(parser, builder, file)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
         message = " ".join(str(p) for p in (exc.context, exc.problem) if p)
-        raise UserError([Finding(file, line, col, "E100", f"YAML syntax: {message}")]) from None
+        extra = hint(message, text.splitlines(), line, col)
+        message = f"YAML syntax: {message}" + (f"; {extra}" if extra else "")
+        raise UserError([Finding(file, line, col, "E100", message)]) from None
     except yaml.YAMLError as exc:
         raise UserError([Finding(file, 1, 1, "E100", f"YAML syntax: {exc}")]) from None
-    if node is None:
+    except TooBig as big:
+        raise UserError([Finding(file, *big.pos, big.code, big.message)]) from None
+    finally:
+        parser.dispose()
+    built = builder.built
+    if builder.empty:
         raise UserError([Finding(file, 1, 1, "E105", "the file is empty")])
-    builder = _Builder(doc)
-    try:
-        doc.data = builder.build(node, ())
-    except _TooBig as big:
-        line, col = _mark(big.node)
-        message = f"the document expands to more than {MAX_NODES} nodes (aliases nested too deep?)"
-        raise UserError([Finding(file, line, col, "E106", message)]) from None
-    if builder.errors:
-        raise UserError(builder.errors)
+    if built.errors:
+        raise UserError(built.errors)
+    doc.data, doc.keys, doc.values = built.data, built.keys, built.values
     return doc
+
+
+def _drive(parser: Any, builder: EventBuilder, file: str) -> None:
+    get = parser.get_event
+    get()  # the stream's start
+    if get().__class__ is ev.StreamEndEvent:
+        builder.empty = True
+        return
+    builder.feed(get)
+    get()  # the document's end
+    after = get()
+    if after.__class__ is not ev.StreamEndEvent:
+        mark = after.start_mark
+        message = "YAML syntax: a second document ('---'): a file holds one document"
+        raise UserError([Finding(file, mark.line + 1, mark.column + 1, "E100", message)])
 
 
 def read_file(path: Path) -> Document:
     file = str(path)
+    return parse_text(decode(read_bytes(path, file), file), file)
+
+
+def read_bytes(path: Path, file: str) -> bytes:
+    """The bytes of a regular file of at most MAX_BYTES; never blocks on a FIFO or a device."""
     try:
-        raw = path.read_bytes()
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0))
     except OSError as exc:
         raise UserError([Finding(file, 1, 1, "E105", f"cannot read the file: {exc.strerror}")]) from None
-    return parse_text(decode(raw, file), file)
+    info = os.fstat(fd)
+    if not stat.S_ISREG(info.st_mode):
+        os.close(fd)
+        kind = "a folder" if stat.S_ISDIR(info.st_mode) else "not a regular file (a FIFO, a device?)"
+        raise UserError([Finding(file, 1, 1, "E105", f"cannot read the file: it is {kind}")])
+    with os.fdopen(fd, "rb") as handle:
+        if info.st_size > MAX_BYTES:
+            raise UserError([_too_big(file, info.st_size)])
+        try:
+            raw = handle.read(MAX_BYTES + 1)
+        except OSError as exc:
+            raise UserError([Finding(file, 1, 1, "E105", f"cannot read the file: {exc.strerror}")]) from None
+    if len(raw) > MAX_BYTES:
+        raise UserError([_too_big(file, len(raw))])
+    return raw
+
+
+def _too_big(file: str, size: int) -> Finding:
+    limit = MAX_BYTES // (1024 * 1024)
+    message = f"the file is larger than {limit} MiB ({size:,} bytes): refused unread"
+    return Finding(file, 1, 1, "E106", message)
 
 
 def read_mapping(path: Path, what: str) -> Document:

@@ -38,8 +38,8 @@ Scenarios: `scenario_from_dict(data)` validates parsed YAML, `resolve(name_or_pa
 a shipped scenario by name or a file by path, `load_scenario(name_or_path)` does both.
 The default scenario is `DEFAULT_SCENARIO` ("opposite_long_side").
 
-Pictures: `sim.recorder.Recorder(path, every=0.5, cameras=False)` passed as
-`World(..., recorder=...)` writes a top-down MP4 (or GIF) and a final PNG.
+Pictures: `sim.recorder.Recorder(path, every=0.5, cameras=False, view="top"|"3d")` passed as
+`World(..., recorder=...)` writes an H.264 MP4 (or VP9 WebM, or GIF) and a final PNG.
 
 The motion, camera and body profile, the lifting rules and the scorer are described in
 sim/README.md (numbers in sim/profile.py).

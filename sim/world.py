@@ -59,6 +59,7 @@ class World:
             self.radio = Radio(radio_latency, radio_loss, seed)
             self._steps = 0
             self._recorder = recorder
+            self.labels: dict[str, str] = {}  # shown beside each robot's name in videos (role, behaviour)
             self._next_capture = 0.0
         except BaseException:
             p.disconnect(physicsClientId=self._cid)

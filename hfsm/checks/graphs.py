@@ -54,8 +54,17 @@ def check_state_graph(ctx: CheckContext, mf: MachineFile) -> None:
         if g.in_degree(("outcome", outcome)) == 0 and not timer_reaches:
             ctx.warn(mf, ("outcomes", i), "W401", f"outcome '{outcome}' is never reached")
     if not _guarded(ctx, mf.name):
-        ordinary = digraph.subgraph_view(g, filter_edge=lambda u, v, k: not _common_error(g.edges[u, v, k]))
-        _warn_loops(ctx, mf, ordinary.subgraph(reached))
+        _warn_loops(ctx, mf, _ordinary(g, reached))
+
+
+def _ordinary(g: digraph.MultiDiGraph, reached: set[object]) -> digraph.DiGraph:
+    """The reached states and their arcs but the common error ones, as a plain graph."""
+    out = digraph.DiGraph()
+    out.add_nodes_from(reached)
+    for u, v, _, d in g.edge_items():
+        if u in reached and v in reached and not _common_error(d):
+            out.add_edge(u, v)
+    return out
 
 
 def _common_error(edge: dict[str, object]) -> bool:
@@ -63,7 +72,7 @@ def _common_error(edge: dict[str, object]) -> bool:
     return bool(edge["common"]) and edge["kind"] == "error"
 
 
-def _warn_loops(ctx: CheckContext, mf: MachineFile, g: digraph.MultiDiGraph) -> None:
+def _warn_loops(ctx: CheckContext, mf: MachineFile, g: digraph.DiGraph) -> None:
     for component in _cyclic_components(g):
         names = [n for n in mf.model.states if ("state", n) in component]
         message = (

@@ -12,6 +12,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from hfsm.cli import report
+from hfsm.cli.fail import check_failures, fail_arg
 from hfsm.cli.params import parse_params
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import UsageError, UserError
@@ -59,6 +60,14 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     p.add_argument("--schema", action="store_true", help="print the JSON Schema of machine files")
     p.add_argument("--traceback", action="store_true", help="show Python tracebacks of run-time errors")
     p.add_argument("--quiet", action="store_true", help="no summary table on stderr")
+    p.add_argument(
+        "--fail",
+        action="append",
+        type=fail_arg,
+        default=[],
+        metavar="AGENT@S",
+        help="fail that agent S seconds into the run (repeatable)",
+    )
     for factory in factories.values():
         factory.add_arguments(p.add_argument_group(f"--world {factory.name}"))
     return p
@@ -141,7 +150,9 @@ def _run(
     from hfsm.runtime.run import RunOptions, run
 
     top = loaded.roots[0]
-    options = RunOptions(top.name, _agents(args, world), params, args.seed, args.max_time)
+    agents = _agents(args, world)
+    check_failures(args.fail, agents)
+    options = RunOptions(top.name, agents, params, args.seed, args.max_time, args.fail)
     program = Program(loaded.machines, registry, args.dt)
     trace_path = args.trace or world.default_trace
     trace = _open_trace(trace_path) if trace_path else None

@@ -1,15 +1,22 @@
-"""An agent's run-time state: its stack of machine frames, its mailbox, its statistics."""
+"""An agent's run-time state: a tree of running machines and regions, its mailbox, its statistics.
+
+A `Frame` is one running machine; below its current state runs one thing: an activity (a built-in
+or a primitive), another frame (a called machine), or, in a parallel state, a list of `Region`s,
+each running an activity or a frame of its own. Frames and regions know who runs them (`up`,
+`owner`), so paths and endings are found by walking up, never by counting levels.
+"""
 
 from __future__ import annotations
 
 import random
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
 from hfsm.expr import Scope
 from hfsm.primitive import Message
 from hfsm.runtime.live import Clock, FrameLive, Inputs
-from hfsm.runtime.program import RMachine, RState
+from hfsm.runtime.states import RMachine, RRegion, RState
 from hfsm.world import World
 
 
@@ -39,37 +46,42 @@ class Event:
 
 
 class Activity(Protocol):
-    """A running built-in or primitive: the leaf of an agent's stack."""
+    """A running built-in or primitive: a leaf of an agent's tree."""
 
     deadline: int | None  # the tick it must next be advanced in; None: only when a message comes
 
     def advance(self, tick: int) -> Event | None: ...
 
-    def cancel(self) -> None: ...
+    def cancel(self) -> str:
+        """Stop at once, cleaning up; a problem as text (e.g. the cancel was swallowed), or ''."""
 
 
 class Frame:
-    """One running machine: its memory, its current state and its timers."""
+    """One running machine: its memory, its current state, its timers, and what runs below it."""
 
     __slots__ = (
-        "_scope", "activity", "agent", "attempt", "clock", "deadline", "entered", "machine", "params",
-        "started", "state", "state_deadline", "vars",
+        "_scope", "agent", "attempt", "below", "clock", "deadline", "entered", "machine", "params",
+        "retry_at", "started", "state", "state_deadline", "up", "vars",
     )  # fmt: skip
 
-    def __init__(self, machine: RMachine, params: dict[str, Any], agent: Agent, clock: Clock) -> None:
+    def __init__(
+        self, machine: RMachine, params: dict[str, Any], agent: Agent, clock: Clock, up: Frame | Region | None
+    ) -> None:
         self.machine = machine
         self.params = params
         self.vars = machine.fresh_vars() if machine.var_init else {}
         self.agent = agent
         self.clock = clock
+        self.up = up
         self._scope: Scope | None = None
         self.state: RState = machine.initial  # type: ignore[assignment]
-        self.deadline: int | None = None
+        self.deadline: int | None = None  # the machine timer's tick
         self.state_deadline: int | None = None
+        self.retry_at: int | None = None  # the tick a retry's delay ends in
         self.started = clock.tick
         self.entered = 0
         self.attempt = 1
-        self.activity: Activity | None = None
+        self.below: Any = None  # Activity | Frame | list[Region] | None
 
     @property
     def scope(self) -> Scope:
@@ -78,6 +90,46 @@ class Frame:
             live = FrameLive(self, self.clock, self.agent.inputs)
             self._scope = Scope(self.params, self.vars, self.agent.name, live)
         return self._scope
+
+    def prefix(self) -> list[str]:
+        """The path of the state or region that runs this machine."""
+        up = self.up
+        return [self.agent.top] if up is None else up.path()
+
+    def path(self) -> list[str]:
+        """The path of this machine's current state."""
+        return [*self.prefix(), self.state.name]
+
+
+class Region:
+    """One region of a running parallel state; `result` is set when its behaviour ends."""
+
+    __slots__ = ("below", "owner", "result", "spec")
+
+    def __init__(self, spec: RRegion, owner: Frame) -> None:
+        self.spec = spec
+        self.owner = owner
+        self.below: Any = None  # Activity | Frame | None
+        self.result: Event | None = None
+
+    def path(self) -> list[str]:
+        return [*self.owner.path(), self.spec.name]
+
+
+def leaves(frame: Frame) -> Iterator[Frame | Region]:
+    """The innermost running frames and regions below `frame`, in region order."""
+    below = frame.below
+    if below.__class__ is Frame:
+        yield from leaves(below)
+    elif below.__class__ is list:
+        for region in below:
+            if region.result is None:
+                if region.below.__class__ is Frame:
+                    yield from leaves(region.below)
+                else:
+                    yield region
+    else:
+        yield frame
 
 
 @dataclass
@@ -92,24 +144,29 @@ class AgentResult:
     outcome: str | None
     outputs: dict[str, Any]
     time: float
+    failed: str | None = None  # the reason, when the agent failed (SPEC 15)
 
 
 class Agent:
     def __init__(self, name: str, top: str, robot: Any, seed: int, world: World) -> None:
         self.name = name
-        self.inputs = Inputs(world, name)
         self.top = top
         self.robot = robot
         self.rng = random.Random(f"{seed}:{name}")
-        self.stack: list[Frame] = []
+        self.inputs = Inputs(world, name)
+        self.root: Frame | None = None
         self.mailbox: list[Message] = []
         self.stats: dict[str, BehaviourStats] = {}
         self.entries = 0
         self.started = False
         self.result: AgentResult | None = None
+        self.failed: str | None = None  # the reason, once a world or --fail has failed it
 
-    def path(self, level: int) -> list[str]:
-        return [self.top, *(f.state.name for f in self.stack[: level + 1])]
+    def where(self) -> str:
+        """Each innermost running state's path, for messages about an agent that has not ended."""
+        if self.root is None:
+            return self.top
+        return ", ".join("/".join(leaf.path()) for leaf in leaves(self.root))
 
     def take_message(self, names: Any) -> Message | None:
         """Remove and return the earliest message whose name is in `names`."""

@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import logging
 import math
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable
+from typing import Any
 
 from hfsm.names import RESERVED_MESSAGES, is_name
-from hfsm.runtime.agent import Agent, Event, Frame
-
-if TYPE_CHECKING:
-    from hfsm.runtime.engine import Engine
+from hfsm.runtime.agent import Activity, Agent, Event, Frame, Region
+from hfsm.runtime.barrier import start_barrier
+from hfsm.runtime.host import Host
 
 DONE = Event("done")
 log = logging.getLogger("hfsm.log")
@@ -25,8 +25,8 @@ class Wait:
     def advance(self, tick: int) -> Event | None:
         return DONE if self.deadline is not None and tick >= self.deadline else None
 
-    def cancel(self) -> None:
-        pass
+    def cancel(self) -> str:
+        return ""
 
 
 class WaitFor:
@@ -43,15 +43,17 @@ class WaitFor:
             return None
         return Event("received", {**message.data, "sender": message.sender})
 
-    def cancel(self) -> None:
-        pass
+    def cancel(self) -> str:
+        return ""
 
 
 def _error(text: str) -> Event:
     return Event("error", error=text)
 
 
-def start_wait(engine: Engine, agent: Agent, frame: Frame, params: dict[str, Any]) -> Wait | Event:
+def start_wait(
+    host: Host, agent: Agent, frame: Frame, params: dict[str, Any], where: Frame | Region
+) -> Wait | Event:
     seconds = params["seconds"]
     if seconds is None:
         return Wait(None)
@@ -59,38 +61,43 @@ def start_wait(engine: Engine, agent: Agent, frame: Frame, params: dict[str, Any
         return DONE
     if not math.isfinite(seconds):
         return _error(f"wait: seconds must be finite, not {seconds}")
-    return Wait(engine.tick + engine.span(seconds))
+    return Wait(host.tick + host.span(seconds))
 
 
-def start_wait_for(engine: Engine, agent: Agent, frame: Frame, params: dict[str, Any]) -> WaitFor | Event:
+def start_wait_for(
+    host: Host, agent: Agent, frame: Frame, params: dict[str, Any], where: Frame | Region
+) -> WaitFor | Event:
     activity = WaitFor(agent, params["message"])
-    return activity.advance(engine.tick) or activity
+    return activity.advance(host.tick) or activity
 
 
-def start_send(engine: Engine, agent: Agent, frame: Frame, params: dict[str, Any]) -> Event:
+def start_send(
+    host: Host, agent: Agent, frame: Frame, params: dict[str, Any], where: Frame | Region
+) -> Event:
     name, to, data = params["message"], params.get("to", "others"), params.get("data", {})
     if not is_name(name) or name in RESERVED_MESSAGES:
         return _error(f"send: bad message name {name!r}")
-    problem = engine.send(agent, name, to, data)
+    problem = host.send(agent, where, name, to, data)
     return _error(problem) if problem else Event("sent")
 
 
-def start_set(engine: Engine, agent: Agent, frame: Frame, params: dict[str, Any]) -> Event:
+def start_set(host: Host, agent: Agent, frame: Frame, params: dict[str, Any], where: Frame | Region) -> Event:
     frame.vars.update(params)
     return DONE
 
 
-def start_log(engine: Engine, agent: Agent, frame: Frame, params: dict[str, Any]) -> Event:
-    log.info(
-        "%s %s t=%s: %s", agent.name, "/".join(agent.path(len(agent.stack) - 1)), engine.time, params["text"]
-    )
+def start_log(host: Host, agent: Agent, frame: Frame, params: dict[str, Any], where: Frame | Region) -> Event:
+    log.info("%s %s t=%s: %s", agent.name, "/".join(where.path()), host.time, params["text"])
     return DONE
 
 
-STARTERS = {
+Starter = Callable[[Host, Agent, Frame, dict[str, Any], Frame | Region], Activity | Event]
+
+STARTERS: dict[str, Starter] = {
     "wait": start_wait,
     "wait_for": start_wait_for,
     "send": start_send,
     "set": start_set,
     "log": start_log,
+    "barrier": start_barrier,
 }

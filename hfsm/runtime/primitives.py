@@ -7,61 +7,60 @@ import math
 import sys
 import traceback
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from greenlet import GreenletExit, greenlet
 
 from hfsm.primitive import Cancelled, Message, Outcome, Primitive
-from hfsm.runtime.agent import Agent, Event
+from hfsm.runtime.agent import Agent, Event, Frame, Region
+from hfsm.runtime.host import Host
 from hfsm.runtime.program import span_ticks
 
-if TYPE_CHECKING:
-    from hfsm.runtime.engine import Engine
+_KEPT_WAITING = object()  # what a cancelled primitive hands back when it waits again
 
 
 class RunContext:
     """The `hfsm.primitive.Context` a primitive gets: clock, agent, mailbox, world handle, logger."""
 
-    def __init__(self, engine: Engine, agent: Agent, behaviour: str) -> None:
-        self._engine = engine
+    def __init__(self, host: Host, agent: Agent, behaviour: str, where: Frame | Region) -> None:
+        self._host = host
         self._agent = agent
+        self._where = where
         self.agent = agent.name
         self.robot = agent.robot
-        self.dt = engine.dt
+        self.dt = host.dt
         self.rng = agent.rng
         self.log = logging.getLogger(f"hfsm.{agent.name}.{behaviour}")
         self.cancelled = False
 
     @property
     def tick(self) -> int:
-        return self._engine.tick
+        return self._host.tick
 
     @property
     def time(self) -> float:
-        return self._engine.time
+        return self._host.time
 
     def wait(self, seconds: float | None = None) -> None:
-        if self.cancelled:
-            raise Cancelled
-        if seconds is not None and seconds <= 0:
-            return
-        if seconds is None:
-            resume = self._engine.tick + 1
-        elif math.isfinite(seconds):
-            resume = self._engine.tick + span_ticks(seconds, self.dt)
-        else:
-            resume = sys.maxsize
         hub = greenlet.getcurrent().parent
         if hub is None:
             raise RuntimeError("ctx.wait() called outside a running primitive")
-        hub.switch(resume)
         if self.cancelled:
-            raise Cancelled
+            hub.switch(_KEPT_WAITING)  # it caught Cancelled and waits on: the engine ends it
+        if seconds is not None and seconds <= 0:
+            return
+        if seconds is None:
+            resume = self._host.tick + 1
+        elif math.isfinite(seconds):
+            resume = self._host.tick + span_ticks(seconds, self.dt)
+        else:
+            resume = sys.maxsize
+        hub.switch(resume)
 
     def wait_until(self, ready: Callable[[], bool], timeout: float = math.inf) -> bool:
-        end = self._engine.tick + span_ticks(timeout, self.dt) if math.isfinite(timeout) else None
+        end = self._host.tick + span_ticks(timeout, self.dt) if math.isfinite(timeout) else None
         while not ready():
-            if end is not None and self._engine.tick >= end:
+            if end is not None and self._host.tick >= end:
                 return False
             self.wait()
         return True
@@ -70,14 +69,16 @@ class RunContext:
         return self._agent.take_message((name,))
 
     def send(self, message: str, to: str = "others", **data: Any) -> None:
-        self._engine.send(self._agent, message, to, data)
+        self._host.send(self._agent, self._where, message, to, data)
 
 
 class PrimitiveActivity:
-    def __init__(self, prim: Primitive, ctx: RunContext, params: dict[str, Any], origin: str) -> None:
+    def __init__(
+        self, prim: Primitive, ctx: RunContext, params: dict[str, Any], where: Frame | Region
+    ) -> None:
         self.prim = prim
         self.ctx = ctx
-        self.origin = origin
+        self.where = where
         self.deadline: int | None = None
         self._g = greenlet(lambda: prim.fn(ctx, **params))
 
@@ -86,35 +87,44 @@ class PrimitiveActivity:
             value = self._g.switch()
         except Exception as exc:
             text = f"{type(exc).__name__}: {exc}"
-            return Event("error", error=text, origin=self.origin, traceback=traceback.format_exc())
+            return Event("error", error=text, origin=self._origin(), traceback=traceback.format_exc())
         if not self._g.dead:
             self.deadline = value
             return None
         return self._result(value)
+
+    def _origin(self) -> str:
+        return "/".join(self.where.path())
 
     def _result(self, value: Any) -> Event:
         spec = self.prim.spec
         name, outputs = (value.name, dict(value.outputs)) if isinstance(value, Outcome) else (value, {})
         if not isinstance(name, str) or name not in spec.outcomes:
             error = f"'{spec.name}' returned {value!r}, not one of its outcomes ({', '.join(spec.outcomes)})"
-            return Event("error", error=error, origin=self.origin)
+            return Event("error", error=error, origin=self._origin())
         undeclared = set(outputs) - set(spec.outputs or ())
         if spec.outputs is not None and undeclared:
             error = f"'{spec.name}' returned undeclared outputs {sorted(undeclared)}"
-            return Event("error", error=error, origin=self.origin)
+            return Event("error", error=error, origin=self._origin())
         return Event(name, outputs)
 
-    def cancel(self) -> None:
+    def cancel(self) -> str:
+        """Raise `Cancelled` at its blocking call; one that catches it and goes on is ended all the same."""
         if self._g.dead:
-            return
+            return ""
         self.ctx.cancelled = True
         if not self._g:  # never started
-            return
+            return ""
         try:
             self._g.throw(Cancelled())
         except Cancelled:
-            pass
+            return ""
         except Exception:
             self.ctx.log.exception("primitive failed while cleaning up after a cancel")
+            return ""
         if not self._g.dead:
             self._g.throw(GreenletExit())
+            how = "waited again"
+        else:
+            how = "returned"
+        return f"primitive '{self.prim.spec.name}' swallowed its cancellation (it caught Cancelled and {how})"

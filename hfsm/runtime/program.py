@@ -2,20 +2,25 @@
 
 from __future__ import annotations
 
-import copy
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from typing import Any
 
 from hfsm.builtins import BUILTINS
 from hfsm.checks.context import machine_spec
-from hfsm.expr import Fn, Names, compile_expr
+from hfsm.expr import TIMED, Fn, Names, compile_expr, reads
 from hfsm.library import MachineFile
-from hfsm.model import CallState, ChoiceState, IfBranch, Machine
-from hfsm.primitive import Primitive
+from hfsm.model import CallState, ChoiceState, IfBranch, JoinRule, Machine, ParallelState, Region, Retry
+from hfsm.model import Watch as WatchModel
 from hfsm.registry import Registry
+from hfsm.runtime.states import Callee, RMachine, RRegion, RState, Watch
+from hfsm.runtime.states import JoinRule as RJoin
 from hfsm.spec import BehaviourSpec, coerce, type_ok
-from hfsm.values import Value, compile_value
+from hfsm.values import compile_value
+
+__all__ = ["Program", "RMachine", "RState", "machine_params", "resolve_params", "span_ticks", "timer_ticks"]
+
+Resolve = Callable[[str], "RState | str"]
 
 
 def span_ticks(seconds: float, dt: float) -> int:
@@ -52,48 +57,6 @@ def machine_params(machine: MachineFile, given: Mapping[str, Any]) -> dict[str, 
     return params
 
 
-class RState:
-    __slots__ = (
-        "arcs", "branches", "callee", "do", "error_target", "is_choice", "kind", "machine",
-        "msg_arcs", "name", "params", "save", "spec", "timer", "with_",
-    )  # fmt: skip
-
-    def __init__(self, name: str, machine: RMachine) -> None:
-        self.name = name
-        self.machine = machine
-        self.is_choice = False
-        self.do = ""
-        self.kind = ""  # "machine", "primitive", or the built-in's name
-        self.callee: RMachine | Primitive | None = None
-        self.spec: BehaviourSpec | None = None
-        self.with_: dict[str, Value] = {}
-        self.params: dict[str, Any] | None = None  # the callee's params, when `with` holds no expression
-        self.save: tuple[tuple[str, str], ...] = ()
-        self.timer: int | Fn | None = None  # ticks, or an expression giving seconds
-        self.arcs: dict[str, RState | str] = {}
-        self.msg_arcs: dict[str, RState | str] = {}
-        self.error_target: RState | str | None = None
-        self.branches: list[tuple[Fn | None, str, RState | str]] = []  # (condition, text, target)
-
-
-class RMachine:
-    __slots__ = ("endings", "initial", "name", "outputs", "spec", "states", "timer", "var_fresh", "var_init")
-
-    def __init__(self, name: str, spec: BehaviourSpec) -> None:
-        self.name = name
-        self.spec = spec
-        self.states: dict[str, RState] = {}
-        self.initial: RState | None = None
-        self.timer: int | Fn | None = None
-        self.var_init: dict[str, Any] = {}
-        self.var_fresh = False  # whether initial vars must be deep-copied on each call
-        self.outputs: dict[str, Value] = {}
-        self.endings: dict[str, Any] = {}  # outcome -> its Event, shared when there are no outputs
-
-    def fresh_vars(self) -> dict[str, Any]:
-        return copy.deepcopy(self.var_init) if self.var_fresh else dict(self.var_init)
-
-
 class Program:
     """Every machine of a run, compiled for one tick length."""
 
@@ -125,12 +88,11 @@ class Program:
 
         any_msgs = {e: target(t) for e, t in m.any.items() if e != "error"}
         any_error = target(m.any["error"]) if "error" in m.any else None
+        receives = set(m.receives)
         for name, state in m.states.items():
             rs = rm.states[name]
             rs.error_target = any_error
-            if isinstance(state, CallState):
-                self._call_state(rs, state, names, target, any_msgs, set(m.receives))
-            elif isinstance(state, ChoiceState):
+            if isinstance(state, ChoiceState):
                 rs.is_choice = True
                 rs.branches = [
                     (compile_expr(b.condition, names), b.condition, target(b.then))
@@ -138,29 +100,35 @@ class Program:
                     else (None, "else", target(b.else_))
                     for b in state.choose
                 ]
+                continue
+            self._arcs(rs, state.on, target, any_msgs, receives)
+            rs.timer = self._timer(state.timer, names)
+            self._watches(rs, [*m.watch, *state.watch], names, target)
+            if isinstance(state, CallState):
+                self._callee(rs, state, names)
+                rs.save = tuple(state.save.items())
+                if state.retry is not None:
+                    self._retry(rs, state.retry, Names(m.params, None))
+            else:
+                self._parallel(rs, state, names, target)
 
-    def _call_state(
-        self,
-        rs: RState,
-        state: CallState,
-        names: Names,
-        target: Any,
-        any_msgs: dict[str, Any],
-        receives: set[str],
+    def _callee(self, callee: Callee, call: CallState | Region, names: Names) -> None:
+        callee.do = call.do
+        machine, prim = self.machines.get(call.do), self.registry.get(call.do)
+        callee.callee = machine or prim
+        callee.kind = "machine" if machine else "primitive" if prim else call.do
+        callee.spec = machine.spec if machine else prim.spec if prim else BUILTINS[call.do]
+        callee.with_ = {k: compile_value(v, names) for k, v in call.with_.items()}
+        if all(v.constant for v in callee.with_.values()):
+            params = resolve_params(callee.spec, {k: v.literal for k, v in callee.with_.items()})
+            callee.params = params if isinstance(params, dict) else None
+
+    @staticmethod
+    def _arcs(
+        rs: RState, on: Mapping[str, str], target: Resolve, any_msgs: dict[str, Any], receives: set[str]
     ) -> None:
-        rs.do = state.do
-        machine, prim = self.machines.get(state.do), self.registry.get(state.do)
-        rs.callee = machine or prim
-        rs.kind = "machine" if machine else "primitive" if prim else state.do
-        rs.spec = machine.spec if machine else prim.spec if prim else BUILTINS[state.do]
-        rs.with_ = {k: compile_value(v, names) for k, v in state.with_.items()}
-        if all(v.constant for v in rs.with_.values()):
-            params = resolve_params(rs.spec, {k: v.literal for k, v in rs.with_.items()})
-            rs.params = params if isinstance(params, dict) else None
-        rs.save = tuple(state.save.items())
-        rs.timer = self._timer(state.timer, names)
         rs.msg_arcs = dict(any_msgs)
-        for event, to in state.on.items():
+        for event, to in on.items():
             if event == "error":
                 rs.error_target = target(to)
             elif event in receives:
@@ -170,3 +138,49 @@ class Program:
         for event in list(rs.msg_arcs):
             if event in rs.arcs:
                 del rs.msg_arcs[event]
+
+    @staticmethod
+    def _watches(rs: RState, watches: list[WatchModel], names: Names, target: Resolve) -> None:
+        rs.watches = tuple(
+            Watch(compile_expr(w.condition, names), w.condition, target(w.then)) for w in watches
+        )
+        rs.timed = any(
+            name in TIMED or name.startswith("in.") for w in watches for name in reads(w.condition)
+        )
+
+    def _retry(self, rs: RState, retry: Retry, names: Names) -> None:
+        rs.retry_on = frozenset(retry.on)
+        rs.retry_times = (
+            compile_expr(retry.times[2:-1], names) if isinstance(retry.times, str) else retry.times
+        )
+        delay = retry.delay
+        rs.retry_delay = (
+            compile_expr(delay[2:-1], names) if isinstance(delay, str) else span_ticks(delay, self.dt)
+        )
+
+    def _parallel(self, rs: RState, state: ParallelState, names: Names, target: Resolve) -> None:
+        rs.is_parallel = True
+        regions = []
+        for i, (name, region) in enumerate(state.parallel.items()):
+            rr = RRegion(name, i)
+            self._callee(rr, region, names)
+            rr.save = tuple(region.save.items())
+            rr.background = region.background
+            regions.append(rr)
+        rs.regions = tuple(regions)
+        rs.awaited = tuple(r.index for r in regions if not r.background)
+        index = {r.name: r.index for r in regions}
+        rules = []
+        for rule in state.join:
+            if isinstance(rule, JoinRule):
+                when = tuple(
+                    (index[region], frozenset([outs] if isinstance(outs, str) else outs))
+                    for region, outs in rule.when.items()
+                )
+                text = ", ".join(
+                    f"{r}={'|'.join(o) if isinstance(o, list) else o}" for r, o in rule.when.items()
+                )
+                rules.append(RJoin(when, target(rule.then), text))
+            else:
+                rules.append(RJoin((), target(rule.else_), "else"))
+        rs.join = tuple(rules)

@@ -1,13 +1,15 @@
 from __future__ import annotations
 
 import contextlib
+import os
+from pathlib import Path
 
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
 from hfsm.errors import UserError
-from hfsm.yamlio import decode, parse_text
+from hfsm.yamlio import MAX_BYTES, MAX_DEPTH, decode, parse_text, read_file
 
 
 def codes(text: str) -> list[str]:
@@ -22,8 +24,8 @@ def test_yaml_1_1_booleans_stay_strings() -> None:
 
 
 def test_core_schema_scalars() -> None:
-    doc = parse_text("a: [1, -2, 0x1f, 0o17, 1.5, .inf, ~, null, '', 1_000, 2001-01-01]\n", "f.yaml")
-    assert doc.data["a"][:8] == [1, -2, 31, 15, 1.5, float("inf"), None, None]
+    doc = parse_text("a: [1, -2, 0x1f, 0o17, 1.5, 1e3, ~, null, '', 1_000, 2001-01-01]\n", "f.yaml")
+    assert doc.data["a"][:8] == [1, -2, 31, 15, 1.5, 1000.0, None, None]
     assert doc.data["a"][8:] == ["", "1_000", "2001-01-01"]
 
 
@@ -74,3 +76,114 @@ def test_non_utf8_reports_the_byte_position() -> None:
 def test_random_bytes_raise_only_user_errors(raw: bytes) -> None:
     with contextlib.suppress(UserError):
         parse_text(decode(raw, "f.yaml"), "f.yaml")
+
+
+def first(text: str) -> tuple[int, int, str, str]:
+    with pytest.raises(UserError) as info:
+        parse_text(text, "f.yaml")
+    f = info.value.findings[0]
+    return f.line, f.col, f.code, f.message
+
+
+@pytest.mark.parametrize("depth", [150, 100_000])
+def test_any_flow_nesting_depth_is_a_positioned_error(depth: int) -> None:
+    line, col, code, message = first("a: " + "[" * depth + "]" * depth + "\n")
+    assert (line, col, code) == (1, 4 + MAX_DEPTH - 1, "E106")
+    assert f"{MAX_DEPTH} deep" in message
+
+
+def test_deep_block_nesting_is_a_positioned_error() -> None:
+    text = "".join(" " * i + f"k{i}:\n" for i in range(MAX_DEPTH + 5)) + " " * (MAX_DEPTH + 5) + "x\n"
+    line, _, code, _ = first(text)
+    assert (line, code) == (MAX_DEPTH + 1, "E106")  # the top mapping is level 1
+
+
+def test_nesting_up_to_the_limit_is_read() -> None:
+    depth = MAX_DEPTH - 1
+    value = parse_text("a: " + "[" * depth + "]" * depth + "\n", "f.yaml").data["a"]
+    for _ in range(depth - 1):
+        (value,) = value
+    assert value == []
+
+
+def test_many_plain_nodes_are_not_an_alias_bomb() -> None:
+    doc = parse_text("a: [" + "1, " * 250_000 + "2]\n", "f.yaml")
+    assert len(doc.data["a"]) == 250_001
+
+
+def test_aliases_repeat_their_anchor_with_its_positions() -> None:
+    doc = parse_text("a: &x {b: [1, 2]}\nc: *x\n", "f.yaml")
+    assert doc.data == {"a": {"b": [1, 2]}, "c": {"b": [1, 2]}}
+    assert doc.values[("c", "b", 1)] == doc.values[("a", "b", 1)] == (1, 15)
+
+
+def test_a_redefined_anchor_keeps_what_it_named_before() -> None:
+    doc = parse_text("a: &x [1]\nb: &x [*x, 2]\nc: *x\nd: &s v\ne: *s\n", "f.yaml")
+    assert doc.data == {"a": [1], "b": [[1], 2], "c": [[1], 2], "d": "v", "e": "v"}
+
+
+@pytest.mark.parametrize("text", ["a: &x [*x]\n", "a: *x\nb: &x 1\n"])
+def test_an_alias_before_its_anchor_is_an_error(text: str) -> None:
+    assert first(text)[2] == "E100"
+
+
+def test_chained_aliases_expand_without_recursion() -> None:
+    n = MAX_DEPTH - 2
+    lines = ["a0: &a0 [1]"] + [f"a{i}: &a{i} [*a{i - 1}]" for i in range(1, n + 1)]
+    doc = parse_text("\n".join(lines) + "\n", "f.yaml")
+    value = doc.data[f"a{n}"]
+    for _ in range(n):
+        value = value[0]
+    assert value == [1]
+
+
+@pytest.mark.parametrize("literal", [".nan", ".NaN", ".inf", "-.inf", "+.Inf", "1e999", "!!float .nan"])
+def test_non_finite_numbers_are_refused(literal: str) -> None:
+    line, col, code, message = first(f"a:\n  b: {literal}\n")
+    assert (line, col, code) == (2, 6, "E100")
+    assert "finite" in message
+
+
+def test_a_second_document_is_pointed_at() -> None:
+    assert first("a: 1\n---\nb: 2\n")[:3] == (2, 1, "E100")
+
+
+@pytest.mark.parametrize(
+    ("text", "words"),
+    [
+        ("a:\n\tb: 1\n", "a tab"),
+        ("a: x\n\tb: 2\n", "a tab"),
+        ("states:\n  s:\n    do: log\n     with: 1\n", "indented deeper than line 3"),
+        ("text: hello: world\n", "quote a value that holds ': '"),
+        ("a:\n  b: 1\n c: 2\n", "does not line up"),
+        ("a: [x, #y]\n", "'#'"),
+        ("a: @x\n", "'@' cannot start"),
+        ('a: "x\n', "never closed"),
+    ],
+)
+def test_syntax_errors_carry_a_hint(text: str, words: str) -> None:
+    assert words in first(text)[3]
+
+
+def test_a_fifo_is_refused_at_once(tmp_path: Path) -> None:
+    fifo = tmp_path / "m.yaml"
+    os.mkfifo(fifo)
+    with pytest.raises(UserError) as info:
+        read_file(fifo)
+    assert "not a regular file" in str(info.value)
+
+
+def test_a_device_and_a_folder_are_refused(tmp_path: Path) -> None:
+    for path, words in ((Path("/dev/zero"), "not a regular file"), (tmp_path, "a folder")):
+        with pytest.raises(UserError) as info:
+            read_file(path)
+        assert words in str(info.value)
+
+
+def test_a_huge_file_is_refused_unread(tmp_path: Path) -> None:
+    big = tmp_path / "big.yaml"
+    with big.open("wb") as f:
+        f.truncate(MAX_BYTES + 1)  # sparse: nothing is read, nothing much written
+    with pytest.raises(UserError) as info:
+        read_file(big)
+    assert info.value.findings[0].code == "E106"

@@ -1,0 +1,135 @@
+"""Events and arcs: a state's event taken, the zero-time chain that follows, a machine's end passed up."""
+
+from __future__ import annotations
+
+from hfsm.expr import ExprValueError
+from hfsm.runtime.agent import Event, Frame, Region
+from hfsm.runtime.calls import Calls
+from hfsm.runtime.core import MAX_ENTRIES, FatalError
+from hfsm.runtime.states import RState
+
+
+class Arcs(Calls):
+    def _settle(self, frame: Frame, event: Event) -> None:
+        """Hand `event` to `frame`'s state, and each machine's ending to what runs it, up to the top."""
+        ended = self._run(frame, event)
+        if ended is not None:
+            self._pass_up(frame, ended)
+
+    def _pass_up(self, frame: Frame, ended: Event) -> None:
+        while True:
+            up = frame.up
+            if up is None:
+                self._end_agent(frame.agent, ended)
+                return
+            if up.__class__ is Region:
+                self._region_ended(up, ended)
+                return
+            caller: Frame = up  # type: ignore[assignment]
+            caller.below = None
+            if caller.state.retry_on:
+                retried = self._retry(caller, ended)
+                if retried is None:
+                    return
+                ended = retried
+            after = self._run(caller, ended)
+            if after is None:
+                return
+            frame, ended = caller, after
+
+    def _run(self, frame: Frame, event: Event) -> Event | None:
+        while True:
+            target = self._arc(frame, event)
+            if target is None:
+                return event  # an unmapped error ends the machine and passes to its caller
+            if target.__class__ is str:
+                return self._finish(frame, target)
+            entered = self._enter(frame, target)  # type: ignore[arg-type]
+            if entered is None:
+                return None
+            event = entered
+
+    def _arc(self, frame: Frame, event: Event) -> RState | str | None:
+        state = frame.state
+        name = event.name
+        target: RState | str | None
+        if event.goto is not None:
+            target = event.goto
+        elif name == "error":
+            if not event.origin:
+                event.origin = "/".join(frame.path())
+                self.emit(frame.agent, frame.path(), "error", message=event.error)
+            target = state.error_target
+        elif event.message is not None:
+            target = state.msg_arcs[name]
+        else:
+            found = state.arcs.get(name)
+            if found is None:
+                error = f"'{state.do}' ended with '{name}', which is not one of its outcomes"
+                return self._arc(frame, Event("error", error=error))
+            target = found
+            if state.save and event.outputs:
+                for var, output in state.save:
+                    if output in event.outputs:
+                        frame.vars[var] = event.outputs[output]
+        if self.trace is not None:
+            shown = target.name if target.__class__ is RState else target
+            self.emit(frame.agent, frame.path(), "event", event=name, target=shown)
+        self._leave(frame, name)
+        return target
+
+    def _enter(self, frame: Frame, state: RState) -> Event | None:
+        agent = frame.agent
+        frame.state = state
+        frame.entered = self.tick
+        frame.state_deadline = None
+        frame.attempt = 1
+        if self.trace is not None:
+            self.emit(agent, frame.path(), "enter", **({"do": state.do} if state.do else {}))
+        agent.entries += 1
+        if agent.entries > MAX_ENTRIES:
+            path = "/".join(frame.path())
+            raise FatalError(agent.name, f"{path}: more than {MAX_ENTRIES} state entries in one tick")
+        if state.is_choice:
+            return self._choose(frame, state)
+        if state.timer is not None:
+            ticks = self._ticks(state.timer, frame)
+            if ticks.__class__ is Event:
+                return ticks
+            frame.state_deadline = self.tick + ticks  # type: ignore[operator]
+        if agent.mailbox and state.msg_arcs:
+            message = agent.take_message(state.msg_arcs)
+            if message is not None:
+                return Event(message.name, message=message)
+        if state.watches:
+            event = self._watch(frame, state)
+            if event is not None:
+                return event
+        if state.is_parallel:
+            return self._start_regions(frame)
+        event = self._start_call(frame, state, frame)
+        if event is not None and state.retry_on:
+            return self._retry(frame, event)
+        return event
+
+    def _choose(self, frame: Frame, state: RState) -> Event:
+        for condition, text, target in state.branches:
+            if condition is None:
+                return Event("else", goto=target)
+            try:
+                if condition(frame.scope):
+                    return Event(text, goto=target)
+            except ExprValueError as exc:
+                return Event("error", error=f"in '{text}': {exc}")
+        raise AssertionError("a checked choice ends with else")
+
+    def _watch(self, frame: Frame, state: RState) -> Event | None:
+        """The first watch that holds, as the event that takes its arc (None: none holds, or it stays)."""
+        for watch in state.watches:
+            try:
+                holds = watch.condition(frame.scope)
+            except ExprValueError as exc:
+                return Event("error", error=f"watch '{watch.text}': {exc}")
+            if holds:  # the first that holds decides; one back to this state stays (XABSL's `stay`)
+                return None if watch.target is state else Event(watch.text, goto=watch.target)
+        return None

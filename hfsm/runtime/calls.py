@@ -1,0 +1,158 @@
+"""Calling a behaviour: a state's or a region's `with`, the callee started, a machine's end, retries."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from hfsm.expr import ExprValueError
+from hfsm.runtime.agent import Event, Frame, Region
+from hfsm.runtime.builtins import STARTERS
+from hfsm.runtime.cancel import Cancelling
+from hfsm.runtime.primitives import PrimitiveActivity, RunContext
+from hfsm.runtime.program import RMachine, resolve_params, timer_ticks
+from hfsm.runtime.states import Callee
+from hfsm.spec import is_finite_number
+
+
+class Calls(Cancelling):
+    def _ticks(self, timer: Any, frame: Frame) -> int | Event:
+        if timer.__class__ is int:
+            return int(timer)
+        try:
+            seconds = timer(frame.scope)
+        except ExprValueError as exc:
+            return Event("error", error=f"timer: {exc}")
+        if not is_finite_number(seconds) or seconds <= 0:
+            return Event("error", error=f"timer must be a positive number of seconds, not {seconds!r}")
+        return timer_ticks(seconds, self.dt)
+
+    def _params(self, callee: Callee, frame: Frame) -> dict[str, Any] | Event:
+        try:
+            given = {k: v.fn(frame.scope) for k, v in callee.with_.items()}
+        except ExprValueError as exc:
+            return Event("error", error=str(exc))
+        params = resolve_params(callee.spec, given)  # type: ignore[arg-type]
+        return Event("error", error=params) if isinstance(params, str) else params
+
+    def _start_call(self, frame: Frame, callee: Callee, where: Frame | Region) -> Event | None:
+        """Start `callee` below `where` (a call state's frame, or a region of `frame`'s state).
+
+        `with` reads `frame`. Returns what it ended with at once, or None while it runs.
+        """
+        params = callee.params if callee.params is not None else self._params(callee, frame)
+        if params.__class__ is Event:
+            return params
+        kind = callee.kind
+        agent = frame.agent
+        if kind == "machine":
+            child = Frame(callee.callee, params, agent, self, where)  # type: ignore[arg-type]
+            where.below = child
+            ended = self._begin_machine(child)
+            if ended is not None:
+                where.below = None
+            return ended
+        if kind == "primitive":
+            ctx = RunContext(self, agent, callee.do, where)
+            activity: Any = PrimitiveActivity(callee.callee, ctx, params, where)  # type: ignore[arg-type]
+        else:
+            activity = STARTERS[kind](self, agent, frame, params, where)  # type: ignore[arg-type]
+            if activity.__class__ is Event:
+                return activity
+        event: Event | None = activity.advance(self.tick)
+        if event is None:
+            where.below = activity
+        return event
+
+    def _begin_machine(self, frame: Frame) -> Event | None:
+        """A called machine starts: its timer, its initial state; its ending if it ends at once."""
+        machine: RMachine = frame.machine
+        if machine.timer is not None:
+            ticks = self._ticks(machine.timer, frame)
+            if ticks.__class__ is Event:
+                ticks.origin = "/".join(frame.prefix())
+                return ticks
+            frame.deadline = self.tick + ticks  # type: ignore[operator]
+        event = self._enter(frame, machine.initial)  # type: ignore[arg-type]
+        return None if event is None else self._run(frame, event)
+
+    def _finish(self, frame: Frame, outcome: str) -> Event:
+        """`frame`'s machine ends in `outcome`: its outputs evaluated."""
+        machine = frame.machine
+        if not machine.outputs:
+            ending = machine.endings.get(outcome)
+            if ending is None:
+                ending = machine.endings[outcome] = Event(outcome, {})
+            return ending
+        outputs = {}
+        try:
+            for name, value in machine.outputs.items():
+                outputs[name] = value.fn(frame.scope)
+        except ExprValueError as exc:
+            return Event("error", error=f"outputs of '{machine.name}': {exc}")
+        return Event(outcome, outputs)
+
+    def _retry(self, frame: Frame, event: Event) -> Event | None:
+        """The callee of `frame`'s state ended with `event`: call it again (SPEC 13), or hand it on."""
+        state = frame.state
+        while event.name in state.retry_on:
+            times = self._count_of(state.retry_times, frame, "times")
+            if times.__class__ is Event:
+                return times
+            if frame.attempt > times:  # type: ignore[operator]
+                return event
+            self._ended_once(frame, event)
+            frame.attempt += 1
+            if self.trace is not None:
+                self.emit(
+                    frame.agent,
+                    frame.path(),
+                    "event",
+                    event="retry",
+                    attempt=frame.attempt,
+                    outcome=event.name,
+                )
+            delay = self._delay(state.retry_delay, frame)
+            if delay.__class__ is Event:
+                return delay
+            if delay:
+                frame.retry_at = self.tick + delay  # type: ignore[operator]
+                return None
+            ended = self._start_call(frame, state, frame)
+            if ended is None:
+                return None
+            event = ended
+        return event
+
+    def _ended_once(self, frame: Frame, event: Event) -> None:
+        """An attempt that will be retried: its error written down, or its outputs saved."""
+        if event.name == "error":
+            if not event.origin:
+                event.origin = "/".join(frame.path())
+                self.emit(frame.agent, frame.path(), "error", message=event.error)
+            return
+        if frame.state.save and event.outputs:
+            for var, output in frame.state.save:
+                if output in event.outputs:
+                    frame.vars[var] = event.outputs[output]
+
+    def _count_of(self, times: Any, frame: Frame, what: str) -> int | Event:
+        if times.__class__ is int:
+            return int(times)
+        try:
+            value = times(frame.scope)
+        except ExprValueError as exc:
+            return Event("error", error=f"retry {what}: {exc}")
+        if value.__class__ is not int or value <= 0:
+            return Event("error", error=f"retry times must be a positive whole number, not {value!r}")
+        return int(value)
+
+    def _delay(self, delay: Any, frame: Frame) -> int | Event:
+        if delay.__class__ is int:
+            return int(delay)
+        try:
+            seconds = delay(frame.scope)
+        except ExprValueError as exc:
+            return Event("error", error=f"retry delay: {exc}")
+        if not is_finite_number(seconds) or seconds < 0:
+            return Event("error", error=f"retry delay must be a number of seconds >= 0, not {seconds!r}")
+        return max(0, self.span(seconds))
