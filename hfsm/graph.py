@@ -8,7 +8,16 @@ from typing import Literal
 
 import networkx as nx
 
-from hfsm.model import CallState, ChoiceState, IfBranch, Machine, state_calls
+from hfsm.model import (
+    CallState,
+    ChoiceState,
+    IfBranch,
+    JoinElse,
+    JoinRule,
+    Machine,
+    ParallelState,
+    state_calls,
+)
 from hfsm.spec import BehaviourSpec
 
 ArcKind = Literal["outcome", "failure", "timeout", "message", "error", "choice", "else"]
@@ -29,13 +38,17 @@ def arcs(m: Machine, specs: Mapping[str, BehaviourSpec]) -> list[Arc]:
     out = [
         Arc(ANY, target, event, "error" if event == "error" else "message") for event, target in m.any.items()
     ]
+    out += [Arc(ANY, w.then, w.condition, "choice", i) for i, w in enumerate(m.watch, start=1)]
     receives = set(m.receives)
     for name, state in m.states.items():
-        if isinstance(state, CallState):
-            spec = specs.get(state.do)
+        if isinstance(state, CallState | ParallelState):
+            spec = specs.get(state.do) if isinstance(state, CallState) else None
             failures = spec.failures if spec else frozenset()
             for event, target in state.on.items():
                 out.append(Arc(name, target, event, _kind(event, failures, receives)))
+            out += [Arc(name, w.then, w.condition, "choice", i) for i, w in enumerate(state.watch, start=1)]
+            if isinstance(state, ParallelState):
+                out += [_join_arc(name, rule, i) for i, rule in enumerate(state.join, start=1)]
         elif isinstance(state, ChoiceState):
             for i, branch in enumerate(state.choose, start=1):
                 if isinstance(branch, IfBranch):
@@ -43,6 +56,13 @@ def arcs(m: Machine, specs: Mapping[str, BehaviourSpec]) -> list[Arc]:
                 else:
                     out.append(Arc(name, branch.else_, "else", "else", i))
     return out
+
+
+def _join_arc(state: str, rule: JoinRule | JoinElse, order: int) -> Arc:
+    if isinstance(rule, JoinElse):
+        return Arc(state, rule.else_, "else", "else", order)
+    when = ", ".join(f"{r}={'|'.join(o) if isinstance(o, list) else o}" for r, o in rule.when.items())
+    return Arc(state, rule.then, when, "choice", order)
 
 
 def _kind(event: str, failures: frozenset[str], receives: set[str]) -> ArcKind:
@@ -66,7 +86,7 @@ def state_graph(m: Machine, machine_arcs: list[Arc]) -> nx.MultiDiGraph:
             continue
         sources = m.states if arc.source == ANY else [arc.source]
         for source in sources:
-            if arc.source == ANY and arc.kind != "error" and not isinstance(m.states[source], CallState):
+            if arc.source == ANY and arc.kind != "error" and isinstance(m.states[source], ChoiceState):
                 continue  # in a choice state only `error` can fire
             g.add_edge(("state", source), target, event=arc.event, kind=arc.kind, common=arc.source == ANY)
     return g
