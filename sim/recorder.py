@@ -4,6 +4,7 @@ and a PNG of the last frame. The world calls `capture` every `every` simulated s
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -103,15 +104,40 @@ class Recorder:
         self._writer.write(frame)
 
     def close(self) -> None:
-        """Finish the video and write the last frame as <path>.png."""
+        """Finish the video and write the last frame as <path>.png; OSError when a file failed.
+
+        OpenCV reports no write errors: a video that is missing or empty afterwards is the sign."""
+        failed: list[str] = []
         if self._writer is not None:
             self._writer.release()
             self._writer = None
+            if not _written(self.path):
+                failed.append(str(self.path))
         if self._gif:
             animation = cv2.Animation()
             animation.frames = self._gif
             animation.durations = [int(1000 / self.fps)] * len(self._gif)
-            cv2.imwriteanimation(str(self.path), animation)
             self._gif = []
+            if not _try_write(lambda: cv2.imwriteanimation(str(self.path), animation), self.path):
+                failed.append(str(self.path))
         if self.last is not None:
-            cv2.imwrite(str(self.path.with_suffix(".png")), self.last)
+            picture = self.path.with_suffix(".png")
+            last = self.last
+            if not _try_write(lambda: cv2.imwrite(str(picture), last), picture):
+                failed.append(str(picture))
+        if failed:
+            raise OSError(f"cannot write {' and '.join(failed)} (a full disk? no permission?)")
+
+
+def _written(path: Path) -> bool:
+    try:
+        return path.stat().st_size > 0
+    except OSError:
+        return False
+
+
+def _try_write(write: Callable[[], bool], path: Path) -> bool:
+    try:
+        return bool(write()) and _written(path)
+    except cv2.error:
+        return False
