@@ -11,9 +11,10 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from behaviours.inputs import SIM_INPUTS
 from hfsm.cli.guard import is_regular_or_new, make_folder, number
 from hfsm.errors import UsageError
-from hfsm.world import NO_INPUTS, InputSpec
+from hfsm.world import InputSpec
 
 if TYPE_CHECKING:
     from behaviours.simworld import SimWorld
@@ -25,7 +26,7 @@ class SimWorldFactory:
     name = "sim"
 
     def inputs(self) -> Mapping[str, InputSpec]:
-        return NO_INPUTS
+        return SIM_INPUTS
 
     def add_arguments(self, group: argparse._ArgumentGroup) -> None:
         group.add_argument(
@@ -45,7 +46,13 @@ class SimWorldFactory:
             "--video",
             type=Path,
             metavar="FILE",
-            help="top-down video, .mp4 or .gif (default DIR/SCENARIO-seedN.mp4)",
+            help="video, .mp4 (H.264), .webm (VP9) or .gif (default DIR/SCENARIO-seedN.mp4)",
+        )
+        group.add_argument(
+            "--view",
+            choices=("top", "3d"),
+            default="top",
+            help="the video and final picture: a schematic from above (fast, default) or a lit 3-D view",
         )
         group.add_argument("--no-video", action="store_true", help="no video and no final picture")
         group.add_argument(
@@ -77,7 +84,10 @@ class SimWorldFactory:
                 message = f"--video {video}: not a regular file (a video cannot report a failed write)"
                 raise UsageError(message)
             make_folder(video.parent, "--video")
-            recorder = Recorder(video)
+            try:
+                recorder = Recorder(video, view=args.view)
+            except ValueError as exc:
+                raise UsageError(f"--video: {exc}") from None
         world = World(
             scenario,
             seed,

@@ -35,5 +35,21 @@ BUILTINS: dict[str, BehaviourSpec] = {
         ),
         BehaviourSpec("set", "builtin", {}, ("done",), open_params=True, doc="Assign variables."),
         BehaviourSpec("log", "builtin", {"text": ParamSpec("text", "str")}, ("done",), doc="Log a line."),
+        BehaviourSpec(
+            "barrier",
+            "builtin",
+            {
+                "name": ParamSpec("name", "str", doc="the barrier; agents meet at the same name"),
+                "agents": ParamSpec(
+                    "agents", "list", required=False, default=[], doc="agent ids; empty: every other agent"
+                ),
+                "at_least": ParamSpec(
+                    "at_least", "int", required=False, default=0, doc="how many must arrive; 0: all"
+                ),
+            },
+            ("passed",),
+            outputs=frozenset({"arrived"}),
+            doc="Wait until the named agents reach the barrier of the same name (SPEC 14).",
+        ),
     )
 }

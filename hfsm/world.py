@@ -15,6 +15,7 @@ from typing import Any, Protocol
 from hfsm.primitive import Message
 
 WORLDS_GROUP = "hfsm.worlds"
+NOTICE = "barrier notice"  # the kind of the engine's own barrier notices: never a message name (SPEC 14)
 
 
 @dataclass(frozen=True)
@@ -60,6 +61,17 @@ class World(Protocol):
     def advance(self, tick: int) -> None:
         """Move the world from tick `tick` to tick `tick + 1`."""
 
+    def failures(self, tick: int) -> Sequence[tuple[str, str]]:
+        """The agents this world fails at the start of `tick`, each with the reason (SPEC 15).
+
+        A static world is asked only in the ticks the run does not skip: one that fails agents
+        on its own must not be static.
+        """
+
+    def fail(self, agent: str) -> None:
+        """The agent failed (by this world or by `--fail`): its body stops, drops what it holds
+        and goes silent."""
+
     def report(self) -> dict[str, Any]:
         """Extra top-level keys for `--json`, e.g. {"score": {...}}."""
 
@@ -95,9 +107,9 @@ class PerfectRadio:
         return due
 
     def next_delivery(self) -> int | None:
-        if not self._in_flight:
-            return None
-        return min(m.sent_tick for m in self._in_flight) + 1
+        """The next tick a message enters a mailbox (barrier notices never do)."""
+        ticks = [m.sent_tick for m in self._in_flight if m.name != NOTICE]
+        return min(ticks) + 1 if ticks else None
 
 
 class NullWorld(PerfectRadio):
@@ -123,6 +135,12 @@ class NullWorld(PerfectRadio):
         raise KeyError(f"world 'none' declares no input '{name}'")
 
     def advance(self, tick: int) -> None:
+        pass
+
+    def failures(self, tick: int) -> Sequence[tuple[str, str]]:
+        return ()
+
+    def fail(self, agent: str) -> None:
         pass
 
     def report(self) -> dict[str, Any]:

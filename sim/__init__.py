@@ -33,13 +33,16 @@ Public API (what the behaviours layer uses)::
     robot.hand_load() -> HandLoad(force, left, right)  # body frame: N on both hands,
                                                #   each hand's give (m) off the arm's posture
     robot.bumped() -> bool                     # body touched something in the last advance
+    robot.battery() -> float                   # charge 0..1 (scenario `battery:` coefficients)
+    world.fail(name)                           # the robot stops, drops what it holds, goes
+                                               #   silent (scenario `failures:`, or the engine)
 
 Scenarios: `scenario_from_dict(data)` validates parsed YAML, `resolve(name_or_path)` finds
 a shipped scenario by name or a file by path, `load_scenario(name_or_path)` does both.
 The default scenario is `DEFAULT_SCENARIO` ("opposite_long_side").
 
-Pictures: `sim.recorder.Recorder(path, every=0.5, cameras=False)` passed as
-`World(..., recorder=...)` writes a top-down MP4 (or GIF) and a final PNG.
+Pictures: `sim.recorder.Recorder(path, every=0.5, cameras=False, view="top"|"3d")` passed as
+`World(..., recorder=...)` writes an H.264 MP4 (or VP9 WebM, or GIF) and a final PNG.
 
 The motion, camera and body profile, the lifting rules and the scorer are described in
 sim/README.md (numbers in sim/profile.py).

@@ -1,17 +1,20 @@
-"""Top-down video of a run (MP4 'mp4v', or GIF), optionally with the robots' camera views,
-and a PNG of the last frame. The world calls `capture` every `every` simulated seconds."""
+"""Video of a run (H.264 MP4, VP9 WebM or GIF: `sim.video`), top-down or in 3-D (`sim.view3d`),
+optionally with the robots' camera views, and a PNG of the last frame. The world calls `capture`
+every `every` simulated seconds."""
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+import av
 import cv2
 import numpy as np
 
 from sim.profile import ROBOT_COLOURS, TABLE_COLOUR
+from sim.video import VideoWriter
+from sim.view3d import label, perspective, status
 
 if TYPE_CHECKING:
     from sim.world import World
@@ -25,16 +28,21 @@ def _bgr(rgb: tuple[float, float, float], shade: float = 1.0) -> tuple[int, int,
 
 class Recorder:
     def __init__(self, path: str | Path, *, every: float = 0.5, size: int = 480,
-                 cameras: bool = False, fps: float = 10.0) -> None:
+                 cameras: bool = False, fps: float = 10.0, view: str = "top") -> None:
+        if view not in ("top", "3d"):
+            raise ValueError(f"a view is 'top' or '3d', not {view!r}")
         self.path = Path(path)
-        self.every, self.size, self.cameras, self.fps = every, size, cameras, fps
-        self._writer: cv2.VideoWriter | None = None
-        self._gif: list[np.ndarray] = []
+        self.every, self.size, self.cameras, self.fps, self.view = every, size, cameras, fps, view
+        self._video = VideoWriter(self.path, fps)
+        self._failed: str | None = None
         self.last: np.ndarray | None = None
         self.frames = 0
 
     def capture(self, world: World) -> None:
-        frame = self.top_down(world)
+        if self.view == "3d":
+            frame = perspective(world, (self.size * 4 // 3, self.size), world.labels)
+        else:
+            frame = self.top_down(world)
         if self.cameras:
             frame = np.hstack([frame, self._camera_column(world)])
         self._write(frame)
@@ -58,7 +66,12 @@ class Recorder:
                       2 if world.dropped else 1)
         for index, name in enumerate(world.robots):
             self._draw_robot(image, world, name, ROBOT_COLOURS[index % len(ROBOT_COLOURS)], px)
-        cv2.putText(image, f"t={world.time:6.1f}s  wall gap {truth.table_wall_distance():.2f} m",
+        for name in world.robots:
+            x, y, _ = truth.robot_pose(name)
+            extra = world.labels.get(name)
+            label(image, name + (f": {extra}" if extra else ""), px(x, y + 0.3))
+        status(image, world)
+        cv2.putText(image, f"wall gap {truth.table_wall_distance():.2f} m",
                     (margin + 4, self.size - margin - 6), cv2.FONT_HERSHEY_SIMPLEX, 0.45,
                     (255, 255, 255), 1, cv2.LINE_AA)
         return image
@@ -75,8 +88,6 @@ class Recorder:
                               (-g.half_depth, -g.half_width), (g.half_depth, -g.half_width))]
         cv2.fillPoly(image, [np.array([px(*b) for b in box], np.int32)], _bgr(colour))
         cv2.line(image, px(x, y), px(x + c * 0.25, y + s * 0.25), _bgr(colour, 0.6), 2)
-        cv2.putText(image, name, px(x + 0.15, y + 0.15), cv2.FONT_HERSHEY_SIMPLEX, 0.4,
-                    (255, 255, 255), 1, cv2.LINE_AA)
 
     def _camera_column(self, world: World) -> np.ndarray:
         """Each robot's forward and down views stacked, scaled to the frame's height."""
@@ -89,55 +100,26 @@ class Recorder:
     def _write(self, frame: np.ndarray) -> None:
         self.last = frame
         self.frames += 1
-        if self.path.suffix.lower() == ".gif":
-            self._gif.append(frame)
-            return
-        if self._writer is None:
-            height, width = frame.shape[:2]
-            fourcc = cv2.VideoWriter.fourcc(*"mp4v")
-            self._writer = cv2.VideoWriter(str(self.path), fourcc, self.fps, (width, height))
-            if not self._writer.isOpened():
-                self.path = self.path.with_suffix(".gif")
-                self._writer = None
-                self._gif.append(frame)
-                return
-        self._writer.write(frame)
+        if self._failed is None:
+            try:
+                self._video.write(frame)
+            except (OSError, av.FFmpegError) as exc:  # a full disk: the run goes on, `close` reports it
+                self._failed = f"{self.path} ({exc})"
 
     def close(self) -> None:
-        """Finish the video and write the last frame as <path>.png; OSError when a file failed.
-
-        OpenCV reports no write errors: a video that is missing or empty afterwards is the sign."""
-        failed: list[str] = []
-        if self._writer is not None:
-            self._writer.release()
-            self._writer = None
-            if not _written(self.path):
-                failed.append(str(self.path))
-        if self._gif:
-            animation = cv2.Animation()
-            animation.frames = self._gif
-            animation.durations = [int(1000 / self.fps)] * len(self._gif)
-            self._gif = []
-            if not _try_write(lambda: cv2.imwriteanimation(str(self.path), animation), self.path):
-                failed.append(str(self.path))
+        """Finish the video and write the last frame as <path>.png; OSError naming what failed."""
+        failed = [self._failed] if self._failed else []
+        try:
+            self._video.close()
+        except (OSError, av.FFmpegError) as exc:
+            failed.append(f"{self.path} ({exc})")
         if self.last is not None:
             picture = self.path.with_suffix(".png")
-            last = self.last
-            if not _try_write(lambda: cv2.imwrite(str(picture), last), picture):
+            try:
+                written = cv2.imwrite(str(picture), self.last) and picture.stat().st_size > 0
+            except (OSError, cv2.error):
+                written = False
+            if not written:
                 failed.append(str(picture))
         if failed:
-            raise OSError(f"cannot write {' and '.join(failed)} (a full disk? no permission?)")
-
-
-def _written(path: Path) -> bool:
-    try:
-        return path.stat().st_size > 0
-    except OSError:
-        return False
-
-
-def _try_write(write: Callable[[], bool], path: Path) -> bool:
-    try:
-        return bool(write()) and _written(path)
-    except cv2.error:
-        return False
+            raise OSError(f"cannot write {' and '.join(failed)}")

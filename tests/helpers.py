@@ -12,6 +12,7 @@ from typing import Any
 
 from hfsm.load import load
 from hfsm.registry import Registry
+from hfsm.runtime.failing import Failure
 from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, RunResult, run
 from hfsm.trace import ListTrace
@@ -36,6 +37,7 @@ def execute(
     dt: float = 0.05,
     max_time: float = 3600.0,
     seed: int = 0,
+    failures: Sequence[Failure] = (),
 ) -> tuple[RunResult, list[dict[str, Any]]]:
     registry = registry or Registry()
     loaded = load([path], registry=registry)
@@ -43,7 +45,7 @@ def execute(
     full = machine_params(top, params or {})
     program = Program(loaded.machines, registry, dt)
     trace = ListTrace()
-    options = RunOptions(top.name, list(agents), full, seed, max_time)
+    options = RunOptions(top.name, list(agents), full, seed, max_time, failures)
     result = run(program, world or NullWorld(), options, trace)
     return result, trace.records
 

@@ -9,6 +9,7 @@ from helpers import execute
 
 from hfsm.load import load
 from hfsm.registry import Registry
+from hfsm.runtime.failing import Failure
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "examples"
@@ -20,7 +21,10 @@ EXPECTED = {
     "ping_pong": (["a", "b"], {"a": ("lost", 0.2), "b": ("won", 0.15)}),
     "timeouts": (["robot"], {"robot": ("failure", 4.5)}),
     "recover": (["robot"], {"robot": ("failure", 0.0)}),
+    "meet": (["a", "b"], {"a": ("lifted", 3.05), "b": ("lifted", 3.05)}),
+    "fail": (["a", "b", "c"], {"a": ("lifted", 2.55), "b": ("lifted", 2.55), "c": (None, 1.0)}),
 }
+FAILURES = {"fail": [Failure("c", 1.0)]}  # as its doc says: --fail c@1
 
 
 def machine_files() -> list[Path]:
@@ -34,10 +38,12 @@ def test_every_example_has_an_expectation() -> None:
 @pytest.mark.parametrize("name", sorted(EXPECTED))
 def test_example_runs(name: str) -> None:
     agents, expected = EXPECTED[name]
-    result, records = execute(EXAMPLES / f"{name}.yaml", agents=agents)
+    failures = FAILURES.get(name, [])
+    result, records = execute(EXAMPLES / f"{name}.yaml", agents=agents, failures=failures)
     assert result.error is None
     assert {a: (r.outcome, r.time) for a, r in result.agents.items()} == expected
-    assert records == execute(EXAMPLES / f"{name}.yaml", agents=agents)[1], "same seed, same trace"
+    again = execute(EXAMPLES / f"{name}.yaml", agents=agents, failures=failures)[1]
+    assert records == again, "same seed, same trace"
 
 
 @pytest.mark.parametrize("path", machine_files(), ids=lambda p: f"{p.parent.name}/{p.name}")

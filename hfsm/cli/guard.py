@@ -17,11 +17,12 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from types import FrameType
-from typing import Any, cast
+from typing import TYPE_CHECKING, Any
 
 from hfsm.errors import UsageError
-from hfsm.runtime.core import FatalError
-from hfsm.world import World
+
+if TYPE_CHECKING:
+    from hfsm.world import World
 
 
 class OutputError(Exception):
@@ -92,10 +93,6 @@ def make_folder(folder: Path, flag: str) -> None:
 # --- signals ---------------------------------------------------------------------------------
 
 
-class Interrupted(FatalError):
-    """A signal asked the run to stop: ends it like a fatal error, so that everything is cancelled."""
-
-
 @dataclass
 class StopFlag:
     signum: int | None = None
@@ -148,26 +145,6 @@ def _handlers(handler: Callable[[int, FrameType | None], None]) -> Iterator[None
     finally:
         for s, old in saved.items():
             signal.signal(s, old)
-
-
-class _StoppableWorld:
-    """The world, but its mailbox delivery ends the run once a stop signal came."""
-
-    def __init__(self, world: World, flag: StopFlag) -> None:
-        self._world = world
-        self._flag = flag
-
-    def collect(self, tick: int) -> Any:
-        if self._flag.signum is not None:
-            raise Interrupted("", f"stopped by {self._flag.name}")
-        return self._world.collect(tick)
-
-    def __getattr__(self, name: str) -> Any:
-        return getattr(self._world, name)
-
-
-def stoppable(world: World, flag: StopFlag) -> World:
-    return cast(World, _StoppableWorld(world, flag))
 
 
 def close_world(world: World) -> list[str]:

@@ -5,11 +5,13 @@ from __future__ import annotations
 import json
 import sys
 from collections.abc import Iterable
-from typing import Any, TextIO
+from typing import TYPE_CHECKING, Any, TextIO
 
 from hfsm.errors import Finding
-from hfsm.runtime.agent import BehaviourStats
-from hfsm.runtime.run import RunResult
+
+if TYPE_CHECKING:  # `--check` prints findings without loading the interpreter
+    from hfsm.runtime.agent import AgentResult, BehaviourStats
+    from hfsm.runtime.run import RunResult
 
 
 def findings(items: Iterable[Finding], out: TextIO | None = None) -> None:
@@ -18,10 +20,7 @@ def findings(items: Iterable[Finding], out: TextIO | None = None) -> None:
 
 
 def json_result(result: RunResult, extra: dict[str, Any]) -> str:
-    agents = {
-        name: {"outcome": r.outcome, "outputs": r.outputs, "time": r.time}
-        for name, r in result.agents.items()
-    }
+    agents = {name: _entry(r) for name, r in result.agents.items()}
     body: dict[str, Any] = dict(next(iter(agents.values()))) if len(agents) == 1 else {"agents": agents}
     if result.error:
         body["error"] = result.error
@@ -29,10 +28,19 @@ def json_result(result: RunResult, extra: dict[str, Any]) -> str:
     return json.dumps(body, default=str, allow_nan=False)
 
 
+def _entry(r: AgentResult) -> dict[str, Any]:
+    entry = {"outcome": r.outcome, "outputs": r.outputs, "time": r.time}
+    if r.failed is not None:
+        entry["failed"] = r.failed
+    return entry
+
+
 def text_result(result: RunResult, extra: dict[str, Any] | None = None, out: TextIO | None = None) -> None:
     out = out or sys.stdout
     for name, r in result.agents.items():
         ended = f"ended in '{r.outcome}'" if r.outcome is not None else "did not end"
+        if r.failed is not None:
+            ended = f"failed ({r.failed})"
         outputs = f" with {json.dumps(r.outputs, default=str)}" if r.outputs else ""
         print(f"{name}: {ended} at t={r.time:g} s{outputs}", file=out)
     for key, value in (extra or {}).items():

@@ -10,16 +10,13 @@ from pathlib import Path
 
 from hfsm import plugins
 from hfsm.cli import guard, report
+from hfsm.cli.fail import check_failures, fail_arg
 from hfsm.cli.params import parse_params
 from hfsm.cli.quiet import stdout_to_stderr
-from hfsm.cli.tracefile import TraceFile
 from hfsm.errors import UsageError, UserError
 from hfsm.load import Loaded, load
 from hfsm.names import is_name
 from hfsm.registry import Registry
-from hfsm.runtime.program import Program
-from hfsm.runtime.run import RunOptions, run
-from hfsm.schema import schema_text
 from hfsm.world import WORLDS_GROUP, NullWorld, World, WorldFactory
 
 
@@ -52,6 +49,14 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     p.add_argument("--schema", action="store_true", help="print the JSON Schema of machine files")
     p.add_argument("--traceback", action="store_true", help="show Python tracebacks of run-time errors")
     p.add_argument("--quiet", action="store_true", help="no summary table on stderr")
+    p.add_argument(
+        "--fail",
+        action="append",
+        type=fail_arg,
+        default=[],
+        metavar="AGENT@S",
+        help="fail that agent S seconds into the run (repeatable)",
+    )
     for factory in factories.values():
         factory.add_arguments(p.add_argument_group(f"--world {factory.name}"))
     return p
@@ -84,6 +89,8 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
     if args.schema:
+        from hfsm.schema import schema_text
+
         sys.stdout.write(schema_text())
         return 0
     if args.file is None:
@@ -102,13 +109,14 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
     world = _world(args, loaded, registry, factories)
     started = False
     try:
-        options = RunOptions(top.name, _agents(args, world), params, args.seed, args.max_time)
+        agents = _agents(args, world)
+        check_failures(args.fail, agents)
         trace_path = args.trace or world.default_trace
         outputs = [("--trace", trace_path)] if trace_path else []
         outputs += [("--video", Path(p)) for p in getattr(world, "outputs", ())]
         guard.check_outputs(outputs, _inputs(args, loaded))
         started = True
-        return _run(args, loaded, registry, world, options, trace_path)
+        return _run(args, loaded, registry, world, params, agents, trace_path)
     finally:
         files = guard.close_world(world)
         for path in files if started else ():
@@ -154,15 +162,22 @@ def _run(
     loaded: Loaded,
     registry: Registry,
     world: World,
-    options: RunOptions,
+    params: dict[str, object],
+    agents: list[str],
     trace_path: Path | None,
 ) -> int:
+    from hfsm.cli.stop import stoppable  # not needed to check: loaded only to run
+    from hfsm.cli.tracefile import TraceFile
+    from hfsm.runtime.program import Program
+    from hfsm.runtime.run import RunOptions, run
+
+    options = RunOptions(loaded.roots[0].name, agents, params, args.seed, args.max_time, args.fail)
     program = Program(loaded.machines, registry, args.dt)
     trace = TraceFile(trace_path) if trace_path else None
     stop = guard.StopFlag()
     try:
         with guard.signals_flag(stop):
-            result = run(program, guard.stoppable(world, stop), options, trace)
+            result = run(program, stoppable(world, stop), options, trace)
     finally:
         if trace:
             trace.close()

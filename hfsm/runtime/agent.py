@@ -132,32 +132,6 @@ def leaves(frame: Frame) -> Iterator[Frame | Region]:
         yield frame
 
 
-def frames(frame: Frame) -> Iterator[Frame]:
-    """Every running frame at or below `frame`."""
-    yield frame
-    below = frame.below
-    if below.__class__ is Frame:
-        yield from frames(below)
-    elif below.__class__ is list:
-        for region in below:
-            if region.result is None and region.below.__class__ is Frame:
-                yield from frames(region.below)
-
-
-def activities(frame: Frame) -> Iterator[Activity]:
-    """Every running activity below `frame`."""
-    for f in frames(frame):
-        below = f.below
-        if below.__class__ is list:
-            yield from (
-                r.below
-                for r in below
-                if r.result is None and r.below is not None and r.below.__class__ is not Frame
-            )
-        elif below is not None and below.__class__ is not Frame:
-            yield below
-
-
 @dataclass
 class BehaviourStats:
     calls: int = 0
@@ -170,6 +144,7 @@ class AgentResult:
     outcome: str | None
     outputs: dict[str, Any]
     time: float
+    failed: str | None = None  # the reason, when the agent failed (SPEC 15)
 
 
 class Agent:
@@ -185,6 +160,7 @@ class Agent:
         self.entries = 0
         self.started = False
         self.result: AgentResult | None = None
+        self.failed: str | None = None  # the reason, once a world or --fail has failed it
 
     def where(self) -> str:
         """Each innermost running state's path, for messages about an agent that has not ended."""

@@ -9,6 +9,7 @@ from typing import Any
 
 from hfsm.names import RESERVED_MESSAGES, is_name
 from hfsm.runtime.agent import Activity, Agent, Event, Frame, Region
+from hfsm.runtime.barrier import start_barrier
 from hfsm.runtime.host import Host
 
 DONE = Event("done")
@@ -98,4 +99,5 @@ STARTERS: dict[str, Starter] = {
     "send": start_send,
     "set": start_set,
     "log": start_log,
+    "barrier": start_barrier,
 }

@@ -45,12 +45,12 @@ class Cancelling(Core):
         problem = self._cancel_below(frame, reason)
         return Event("error", error=problem) if problem else event
 
-    def stop(self, agent: Agent) -> None:
+    def stop(self, agent: Agent, reason: str = "stopped") -> None:
         """End an agent that has not ended: cancel what runs, close its trace."""
         if not agent.started or agent.root is None:
             return
         root = agent.root
-        self._cancel_below(root, "stopped")
-        self._leave(root, "stopped")
+        self._cancel_below(root, reason)
+        self._leave(root, reason)
         agent.root = None
         self.emit(agent, [agent.top], "exit", outcome=None)

@@ -10,6 +10,7 @@ from __future__ import annotations
 from typing import Any
 
 from hfsm.runtime.agent import Agent, AgentResult, Event, Frame, Region
+from hfsm.runtime.barrier import Team
 from hfsm.runtime.program import span_ticks
 from hfsm.runtime.states import RState
 from hfsm.trace import TraceSink
@@ -38,6 +39,7 @@ class Core:
         self._time = (0, 0.0)  # (tick, seconds) of the last time asked for
         self.running = len(agents)  # agents whose top machine has not ended
         self.spans: dict[float, int] = {}  # seconds -> ticks, for spans seen before
+        self.team = Team(self)  # barriers (SPEC 14)
 
     @property
     def time(self) -> float:
@@ -62,9 +64,12 @@ class Core:
         """The trace's `exit` of a frame's current state, and the statistics of its behaviour."""
         if self.trace is not None:
             self.emit(frame.agent, frame.path(), "exit", event=event)
-        state = frame.state
-        if state.do:
-            self._count(frame.agent, state.do, frame.entered, event)
+        do = frame.state.do
+        if do:
+            stats = frame.agent.stats.get(do) or frame.agent.new_stats(do)
+            stats.calls += 1
+            stats.ticks += self.tick - frame.entered
+            stats.events[event] = stats.events.get(event, 0) + 1
 
     def _region_left(self, region: Region, event: str) -> None:
         if self.trace is not None:

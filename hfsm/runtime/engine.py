@@ -15,6 +15,7 @@ from hfsm.runtime.agent import Agent, Event, Frame, Region, leaves
 from hfsm.runtime.core import FatalError
 from hfsm.runtime.parallel import Parallel
 from hfsm.runtime.program import RMachine
+from hfsm.world import NOTICE
 
 __all__ = ["Engine", "FatalError"]
 
@@ -28,11 +29,8 @@ class Engine(Parallel):
         if ended is not None:
             self._end_agent(agent, ended)
 
-    def step(self, agent: Agent) -> None:
-        if agent.root is not None:
-            self._step(agent.root)
-
-    def _step(self, frame: Frame) -> None:
+    def step(self, frame: Frame) -> None:
+        """An agent's turn in this tick, from its top machine's frame down."""
         k = self.tick
         while True:
             if frame.deadline == k:
@@ -63,7 +61,10 @@ class Engine(Parallel):
                 ended = below.advance(k)
                 if ended is not None:
                     frame.below = None
-                    self._after_call(frame, ended)
+                    if state.retry_on:
+                        self._after_call(frame, ended)
+                    else:
+                        self._settle(frame, ended)
             return
 
     def _watched(self, frame: Frame, k: int) -> bool:
@@ -116,7 +117,10 @@ class Engine(Parallel):
     def deliver(self, messages: list[Message]) -> None:
         for message in messages:
             agent = self.by_name.get(message.to)
-            if agent is None:
+            if agent is None or agent.failed is not None:
+                continue  # lost: nobody hears it
+            if message.name == NOTICE:
+                self.team.receive(message)
                 continue
             agent.mailbox.append(message)
             if self.trace is not None:

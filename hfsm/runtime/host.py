@@ -5,11 +5,13 @@ from __future__ import annotations
 from typing import Any, Protocol
 
 from hfsm.runtime.agent import Agent, Frame, Region
+from hfsm.runtime.barrier import Team
 
 
 class Host(Protocol):
     dt: float
     tick: int
+    team: Team
 
     @property
     def time(self) -> float:

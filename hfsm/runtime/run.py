@@ -7,8 +7,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from hfsm.runtime.agent import Agent, AgentResult, BehaviourStats, Frame, activities, frames
+from hfsm.runtime.agent import Agent, AgentResult, BehaviourStats, Frame
 from hfsm.runtime.engine import Engine, FatalError
+from hfsm.runtime.failing import Failure, Failures, all_failed
 from hfsm.runtime.program import Program, span_ticks
 from hfsm.trace import TraceSink
 from hfsm.world import World
@@ -34,6 +35,7 @@ class RunOptions:
     params: dict[str, Any]
     seed: int = 0
     max_time: float = 3600.0
+    failures: Sequence[Failure] = ()
 
 
 def run(program: Program, world: World, options: RunOptions, trace: TraceSink | None = None) -> RunResult:
@@ -45,6 +47,8 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
     error, tb = _loop(engine, program, options, world)
     if error:
         _stop_all(engine, agents)
+    elif all_failed(agents):
+        error = "every agent failed"
     results = {a.name: a.result or AgentResult(None, {}, engine.time) for a in agents}
     return RunResult(results, engine.time, error, tb, {a.name: a.stats for a in agents})
 
@@ -53,12 +57,15 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
     agents = engine.agents
     last = span_ticks(options.max_time, program.dt)
     top = program.machines[options.top]
+    failures = Failures(engine, options.failures)
     try:
+        failures.apply(0)
         for agent in agents:
-            agent.entries = 0
-            engine.start(agent, top, options.params)
+            if agent.result is None:
+                agent.entries = 0
+                engine.start(agent, top, options.params)
         while engine.running:
-            following = _next_tick(engine) if world.static else engine.tick + 1
+            following = _next_tick(engine, failures) if world.static else engine.tick + 1
             if following is None:
                 return "blocked forever: " + _where(agents), ""
             if following > last:
@@ -67,11 +74,12 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
             if not world.static:
                 world.advance(engine.tick)
             engine.tick = following
+            failures.apply(following)
             engine.deliver(world.collect(following))
             for agent in agents:
                 if agent.result is None:
                     agent.entries = 0
-                    engine.step(agent)
+                    engine.step(agent.root)  # type: ignore[arg-type]
             if engine.trace is not None:
                 engine.trace.flush()
     except FatalError as exc:
@@ -79,39 +87,46 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
     return None, ""
 
 
-def _next_tick(engine: Engine) -> int | None:
+def _next_tick(engine: Engine, failures: Failures) -> int | None:
     """In a static world, the next tick in which anything can happen; None when nothing can."""
     now = engine.tick
-    best = engine.world.next_delivery() or sys.maxsize
+    if engine.team.waiting and engine.team.live():
+        return now + 1
+    best = min(engine.world.next_delivery() or sys.maxsize, failures.next_tick() or sys.maxsize)
     for agent in engine.agents:
         if agent.result is not None or agent.root is None:
             continue
-        best = min(best, _wake(agent, now, best))
+        best = _wake(agent.root, now, best)
         if best == now + 1:
             break
     return None if best == sys.maxsize else best
 
 
-def _wake(agent: Agent, now: int, best: int) -> int:
-    """The earliest tick after `now` in which something of `agent` is due (a timer, a wait, a watch)."""
-    root = agent.root
-    assert root is not None
-    if root.below is not None and root.below.__class__ is not Frame and root.below.__class__ is not list:
-        deadline = root.below.deadline  # one machine running one behaviour: the common case, kept quick
-        if deadline is not None and now < deadline < best:
-            best = deadline
-    else:
-        for activity in activities(root):
-            deadline = activity.deadline
-            if deadline is not None and now < deadline < best:
-                best = deadline
-    for frame in frames(root):
+def _wake(frame: Frame, now: int, best: int) -> int:
+    """The earliest tick after `now`, and before `best`, in which something at or below `frame` is due."""
+    while True:
         if frame.state.timed:
             return now + 1
         for deadline in (frame.deadline, frame.state_deadline, frame.retry_at):
             if deadline is not None and now < deadline < best:
                 best = deadline
-    return best
+        below = frame.below
+        if below is None:
+            return best
+        cls = below.__class__
+        if cls is Frame:
+            frame = below
+            continue
+        if cls is list:
+            for region in below:
+                inner = region.below
+                if inner.__class__ is Frame:
+                    best = _wake(inner, now, best)
+                elif inner is not None and now < (inner.deadline or 0) < best:
+                    best = inner.deadline
+            return best
+        deadline = below.deadline
+        return deadline if deadline is not None and now < deadline < best else best
 
 
 def _where(agents: list[Agent]) -> str:

@@ -49,11 +49,18 @@ def test_default_names_differ_by_radio_settings() -> None:
     assert default_stem("s", 3, 0.3, 2.0) == "s-seed3-loss0.3-latency2"
 
 
-def test_a_video_that_cannot_be_written_is_an_os_error(tmp_path: Path) -> None:
+def test_a_video_that_cannot_be_written_is_an_os_error_at_close(tmp_path: Path) -> None:
     recorder = Recorder(tmp_path / "missing" / "v.mp4")
     recorder._write(np.zeros((48, 48, 3), np.uint8))
-    with pytest.raises(OSError, match="cannot write"):
+    recorder._write(np.zeros((48, 48, 3), np.uint8))
+    with pytest.raises(OSError, match=r"cannot write .*v\.mp4 .*and .*v\.png"):
         recorder.close()
+
+
+def test_a_video_of_an_unknown_kind_is_exit_2(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    code = main([str(ROOT / "machines" / "move_furniture.yaml"), "--video", str(tmp_path / "v.avi")])
+    err = capsys.readouterr().err
+    assert code == 2 and "--video: a video is .mp4, .webm or .gif" in err and "Traceback" not in err
 
 
 def test_a_written_video_and_picture_close_quietly(tmp_path: Path) -> None:
