@@ -74,7 +74,8 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
             if not world.static:
                 world.advance(engine.tick)
             engine.tick = following
-            failures.apply(following)
+            if failures.due or not world.static:
+                failures.apply(following)
             engine.deliver(world.collect(following))
             for agent in agents:
                 if agent.result is None:
@@ -101,7 +102,9 @@ def _next_tick(engine: Engine, failures: Failures) -> int | None:
             break
     if best == sys.maxsize:
         return None  # a failure to come is no agent advancing: blocked forever now
-    return min(best, failures.next_tick() or sys.maxsize)
+    if failures.due:
+        best = min(best, failures.due[0][0])
+    return best
 
 
 def _wake(frame: Frame, now: int, best: int) -> int:
