@@ -38,9 +38,9 @@ def whole_run(scenario: str, view: str, folder: Path) -> float:
     """Run the task in `view`; the wall time of the run."""
     video = folder / f"{scenario}-{view}.mp4"
     begin = time.perf_counter()
-    subprocess.run([HFSM_RUN, str(ROOT / "machines" / "move_furniture.yaml"), "--scenario", scenario,
-                    "--view", view, "--video", str(video), "--out", str(folder), "--quiet", "--progress", "0"],
-                   check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    command = [HFSM_RUN, str(ROOT / "machines" / "move_furniture.yaml"), "--scenario", scenario,
+               "--view", view, "--video", str(video), "--out", str(folder), "--quiet", "--progress", "0"]
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     return time.perf_counter() - begin
 
 

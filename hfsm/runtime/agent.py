@@ -132,32 +132,6 @@ def leaves(frame: Frame) -> Iterator[Frame | Region]:
         yield frame
 
 
-def frames(frame: Frame) -> Iterator[Frame]:
-    """Every running frame at or below `frame`."""
-    yield frame
-    below = frame.below
-    if below.__class__ is Frame:
-        yield from frames(below)
-    elif below.__class__ is list:
-        for region in below:
-            if region.result is None and region.below.__class__ is Frame:
-                yield from frames(region.below)
-
-
-def activities(frame: Frame) -> Iterator[Activity]:
-    """Every running activity below `frame`."""
-    for f in frames(frame):
-        below = f.below
-        if below.__class__ is list:
-            yield from (
-                r.below
-                for r in below
-                if r.result is None and r.below is not None and r.below.__class__ is not Frame
-            )
-        elif below is not None and below.__class__ is not Frame:
-            yield below
-
-
 @dataclass
 class BehaviourStats:
     calls: int = 0

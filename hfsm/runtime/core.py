@@ -64,9 +64,12 @@ class Core:
         """The trace's `exit` of a frame's current state, and the statistics of its behaviour."""
         if self.trace is not None:
             self.emit(frame.agent, frame.path(), "exit", event=event)
-        state = frame.state
-        if state.do:
-            self._count(frame.agent, state.do, frame.entered, event)
+        do = frame.state.do
+        if do:
+            stats = frame.agent.stats.get(do) or frame.agent.new_stats(do)
+            stats.calls += 1
+            stats.ticks += self.tick - frame.entered
+            stats.events[event] = stats.events.get(event, 0) + 1
 
     def _region_left(self, region: Region, event: str) -> None:
         if self.trace is not None:

@@ -29,11 +29,8 @@ class Engine(Parallel):
         if ended is not None:
             self._end_agent(agent, ended)
 
-    def step(self, agent: Agent) -> None:
-        if agent.root is not None:
-            self._step(agent.root)
-
-    def _step(self, frame: Frame) -> None:
+    def step(self, frame: Frame) -> None:
+        """An agent's turn in this tick, from its top machine's frame down."""
         k = self.tick
         while True:
             if frame.deadline == k:
@@ -64,7 +61,10 @@ class Engine(Parallel):
                 ended = below.advance(k)
                 if ended is not None:
                     frame.below = None
-                    self._after_call(frame, ended)
+                    if state.retry_on:
+                        self._after_call(frame, ended)
+                    else:
+                        self._settle(frame, ended)
             return
 
     def _watched(self, frame: Frame, k: int) -> bool:

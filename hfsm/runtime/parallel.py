@@ -33,7 +33,7 @@ class Parallel(Arcs):
                 continue
             below = region.below
             if below.__class__ is Frame:
-                self._step(below)
+                self.step(below)
             elif below is not None and (below.deadline is None or below.deadline <= k):
                 event = below.advance(k)
                 if event is not None:
@@ -84,5 +84,5 @@ class Parallel(Arcs):
                 return self._cancelled(frame, "join", Event(rule.text, goto=rule.target))
         return None
 
-    def _step(self, frame: Frame) -> None:
+    def step(self, frame: Frame) -> None:
         raise NotImplementedError

@@ -7,7 +7,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from hfsm.runtime.agent import Agent, AgentResult, BehaviourStats, Frame, activities, frames
+from hfsm.runtime.agent import Agent, AgentResult, BehaviourStats, Frame
 from hfsm.runtime.engine import Engine, FatalError
 from hfsm.runtime.failing import Failure, Failures, all_failed
 from hfsm.runtime.program import Program, span_ticks
@@ -79,7 +79,7 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
             for agent in agents:
                 if agent.result is None:
                     agent.entries = 0
-                    engine.step(agent)
+                    engine.step(agent.root)  # type: ignore[arg-type]
             if engine.trace is not None:
                 engine.trace.flush()
     except FatalError as exc:
@@ -96,32 +96,37 @@ def _next_tick(engine: Engine, failures: Failures) -> int | None:
     for agent in engine.agents:
         if agent.result is not None or agent.root is None:
             continue
-        best = min(best, _wake(agent, now, best))
+        best = _wake(agent.root, now, best)
         if best == now + 1:
             break
     return None if best == sys.maxsize else best
 
 
-def _wake(agent: Agent, now: int, best: int) -> int:
-    """The earliest tick after `now` in which something of `agent` is due (a timer, a wait, a watch)."""
-    root = agent.root
-    assert root is not None
-    if root.below is not None and root.below.__class__ is not Frame and root.below.__class__ is not list:
-        deadline = root.below.deadline  # one machine running one behaviour: the common case, kept quick
-        if deadline is not None and now < deadline < best:
-            best = deadline
-    else:
-        for activity in activities(root):
-            deadline = activity.deadline
-            if deadline is not None and now < deadline < best:
-                best = deadline
-    for frame in frames(root):
+def _wake(frame: Frame, now: int, best: int) -> int:
+    """The earliest tick after `now`, and before `best`, in which something at or below `frame` is due."""
+    while True:
         if frame.state.timed:
             return now + 1
         for deadline in (frame.deadline, frame.state_deadline, frame.retry_at):
             if deadline is not None and now < deadline < best:
                 best = deadline
-    return best
+        below = frame.below
+        if below is None:
+            return best
+        cls = below.__class__
+        if cls is Frame:
+            frame = below
+            continue
+        if cls is list:
+            for region in below:
+                inner = region.below
+                if inner.__class__ is Frame:
+                    best = _wake(inner, now, best)
+                elif inner is not None and now < (inner.deadline or 0) < best:
+                    best = inner.deadline
+            return best
+        deadline = below.deadline
+        return deadline if deadline is not None and now < deadline < best else best
 
 
 def _where(agents: list[Agent]) -> str:
