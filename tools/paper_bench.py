@@ -40,7 +40,7 @@ def add_sweep_args(p: argparse.ArgumentParser) -> None:
     p.add_argument("--shard", type=Shard.parse, help="run only shard I of N (I/N) and write it to --shards")
     p.add_argument("--merge", action="store_true", help="write the report from the shards in --shards")
     p.add_argument("--shards", type=Path, default=ROOT / "out" / "shards", help="folder of shard files")
-    p.add_argument("--radio-loss", type=float, default=0.0, metavar="P", help="each message lost with probability P")
+    p.add_argument("--radio-loss", type=float, default=0.0, metavar="P", help="chance a message is lost")
     p.add_argument("--radio-latency", type=float, default=0.1, metavar="S", help="seconds a message takes")
 
 
