@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-import networkx as nx
-
+from hfsm import digraph
 from hfsm.checks.context import CheckContext
 from hfsm.checks.timing import guarded, leaves_in_time
 from hfsm.graph import arcs, state_graph
@@ -11,8 +10,9 @@ from hfsm.library import MachineFile
 from hfsm.model import ChoiceState
 
 
-def _cyclic_components(g: nx.DiGraph | nx.MultiDiGraph) -> list[set[object]]:
-    return [c for c in nx.strongly_connected_components(g) if len(c) > 1 or any(g.has_edge(n, n) for n in c)]
+def _cyclic_components(g: digraph.MultiDiGraph) -> list[set[object]]:
+    components = digraph.strongly_connected_components(g)
+    return [c for c in components if len(c) > 1 or any(g.has_edge(n, n) for n in c)]
 
 
 def check_recursion(ctx: CheckContext) -> None:
@@ -26,8 +26,8 @@ def check_recursion(ctx: CheckContext) -> None:
                     ctx.error(mf, ("states", state, "do"), "E312", f"'{caller}' calls itself: {chain}")
 
 
-def _cycle_through(g: nx.DiGraph, caller: str, callee: str) -> list[str]:
-    back = nx.shortest_path(g, callee, caller) if callee != caller else [caller]
+def _cycle_through(g: digraph.DiGraph, caller: str, callee: str) -> list[str]:
+    back = digraph.shortest_path(g, callee, caller) if callee != caller else [caller]
     return [caller, *back]
 
 
@@ -66,18 +66,18 @@ def check_state_graph(ctx: CheckContext, mf: MachineFile) -> None:
             ctx.warn(mf, ("states", names[0]), "W402", message, key=True)
 
 
-def _graph(ctx: CheckContext, mf: MachineFile) -> nx.MultiDiGraph:
+def _graph(ctx: CheckContext, mf: MachineFile) -> digraph.MultiDiGraph:
     key = ("graph", mf.name)
     if key not in ctx.memo:
         ctx.memo[key] = state_graph(mf.model, arcs(mf.model, ctx.specs))
-    return ctx.memo[key]
+    return ctx.memo[key]  # type: ignore[return-value]
 
 
 def _reached(ctx: CheckContext, mf: MachineFile) -> set[object]:
     key = ("reached", mf.name)
     if key not in ctx.memo:
         g, initial = _graph(ctx, mf), ("state", mf.model.initial_state)
-        ctx.memo[key] = nx.descendants(g, initial) | {initial} if initial in g else set()
+        ctx.memo[key] = digraph.descendants(g, initial) | {initial} if initial in g else set()
     return ctx.memo[key]  # type: ignore[return-value]
 
 
@@ -96,13 +96,13 @@ def endless_loops(ctx: CheckContext, mf: MachineFile) -> list[list[str]]:
     return ctx.memo[key]  # type: ignore[return-value]
 
 
-def _ordinary(g: nx.MultiDiGraph, reached: set[object]) -> nx.DiGraph:
-    """The reached states and their arcs but the common error ones, as a plain graph: filtered views
-    of networkx cost a Python call per edge visited, which made large machines check slowly."""
-    out = nx.DiGraph()
+def _ordinary(g: digraph.MultiDiGraph, reached: set[object]) -> digraph.DiGraph:
+    """The reached states and their arcs but the common error ones, as a plain graph."""
+    out = digraph.DiGraph()
     out.add_nodes_from(reached)
-    edges = g.edges(data=True)
-    out.add_edges_from((u, v) for u, v, d in edges if u in reached and v in reached and not _common_error(d))
+    for u, v, _, d in g.edge_items():
+        if u in reached and v in reached and not _common_error(d):
+            out.add_edge(u, v)
     return out
 
 

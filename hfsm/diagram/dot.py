@@ -10,12 +10,13 @@ import html
 import textwrap
 from collections.abc import Iterator, Mapping, Sequence
 
-from hfsm.diagram.model import Cluster, Edge, Emphasis, Figure, Item, Node, Role, Style
-from hfsm.diagram.text import TIMES, paragraph
+from hfsm.diagram.model import Cluster, ClusterKind, Edge, Emphasis, Figure, Item, Lane, Node, Role, Style
+from hfsm.diagram.text import TIMES, labels, paragraph
 
 FONT = "Helvetica"
 FADED = "gray60"
 NOTE_WIDTH = 80  # characters of a legend line
+CAPTION_WIDTH, CAPTION_LINES = 90, 5  # a figure shows the sentences of its doc that fit in these
 GRAPH = {
     "compound": "true",
     "fontname": FONT,
@@ -32,6 +33,8 @@ ROLE: dict[Role, dict[str, str]] = {
     "primitive": {"shape": "ellipse"},
     "builtin": {"shape": "ellipse"},
     "choice": {"shape": "diamond", "fontsize": "10", "margin": "0.03"},
+    "parallel": {"shape": "box", "style": "rounded", "margin": "0.04"},
+    "barrier": {"shape": "plaintext", "margin": "0"},
     "success": {"shape": "box", "peripheries": "2", "fontsize": "10"},
     "failure": {"shape": "doubleoctagon", "fontsize": "10"},
     "timer": {
@@ -54,6 +57,14 @@ STYLE: dict[Style, dict[str, str]] = {
     "call": {"style": "solid"},
     "invisible": {"style": "invis"},
 }
+CLUSTER: dict[ClusterKind, str] = {
+    "call": "rounded",
+    "parallel": "rounded",
+    "region": "dashed",
+    "machine": "rounded",
+}
+BAR_WIDTH = 110  # points: the synchronisation bar of a `barrier`
+LABEL_NODE = "@label"  # after a node's id: the plain-text node beside it that shows its xlabel
 
 
 def to_dot(figure: Figure, link_ext: str = "svg") -> str:
@@ -74,18 +85,28 @@ def _items(items: Sequence[Item], link_ext: str, indent: str) -> Iterator[str]:
     for item in items:
         if isinstance(item, Node):
             yield f"{indent}{_q(item.id)} {_attrs(_node(item, link_ext))};"
+            if item.xlabel:
+                yield from _beside(item, indent)
         else:
             yield from _cluster(item, link_ext, indent)
 
 
+def _beside(n: Node, indent: str) -> Iterator[str]:
+    """A node's xlabel as a plain-text node to its right: laid out as a node, it never overlaps."""
+    label = n.id + LABEL_NODE
+    attrs = {"label": n.xlabel, "shape": "plaintext", "fontsize": "9", "margin": "0.02", "height": "0.2"}
+    attrs.update(_emphasis("faded", "") if n.emphasis == "faded" else {})
+    yield f"{indent}{_q(label)} {_attrs(attrs)};"
+    yield f"{indent}{_q(n.id)} -> {_q(label)} {_attrs({'style': 'invis', 'minlen': '0'})};"
+    yield _rank("same", (n.id, label), indent)
+
+
 def _cluster(c: Cluster, link_ext: str, indent: str) -> Iterator[str]:
     yield f"{indent}subgraph {_q(c.id)} {{"
-    attrs = {
-        "label": _label(c.title, c.lines, c.stats),
-        "style": "rounded",
-        **_links(c.link, c.tooltip, link_ext),
-    }
-    attrs.update({"penwidth": "2.5"} if c.emphasis == "ended" else _emphasis(c.emphasis, "rounded"))
+    style = CLUSTER[c.kind]
+    label = _label(c.title, c.lines, c.stats) if c.title or c.stats else ""  # else the graph's caption
+    attrs = {"label": label, "style": style, **_links(c.link, c.tooltip, link_ext)}
+    attrs.update({"penwidth": "2.5"} if c.emphasis == "ended" else _emphasis(c.emphasis, style))
     yield f"{indent}  graph {_attrs(attrs)};"
     yield from _items(c.items, link_ext, indent + "  ")
     if c.bottom:
@@ -95,15 +116,13 @@ def _cluster(c: Cluster, link_ext: str, indent: str) -> Iterator[str]:
 
 def _node(n: Node, link_ext: str) -> dict[str, str]:
     attrs = dict(ROLE[n.role])
-    attrs["label"] = _node_label(n)
-    if n.xlabel:
-        attrs["xlabel"] = n.xlabel
+    attrs["label"] = _node_label(n, link_ext)
     attrs.update(_links(n.link, n.tooltip, link_ext))
     attrs.update(_emphasis(n.emphasis, attrs.get("style", "")))
     return attrs
 
 
-def _node_label(n: Node) -> str:
+def _node_label(n: Node, link_ext: str) -> str:
     if n.role in ("timer", "point"):
         return ""
     if n.role == "any":
@@ -112,7 +131,36 @@ def _node_label(n: Node) -> str:
         return Raw("".join(_escape(line) + "\\l" for line in textwrap.wrap(n.title, NOTE_WIDTH)))
     if n.role in ("success", "failure", "start") and not n.lines and not n.stats:
         return n.title
+    if n.role == "parallel":
+        return _parallel(n, link_ext)
+    if n.role == "barrier":
+        return _barrier(n)
     return _label(n.title, n.lines, n.stats)
+
+
+def _barrier(n: Node) -> str:
+    """A thick bar (UML's fork and join) over the state's name and call: arcs arrive at the bar."""
+    bar = f'<tr><td bgcolor="black" height="5" width="{BAR_WIDTH}" fixedsize="true"></td></tr>'
+    body = f"<tr><td>{_label(n.title, n.lines, n.stats)}</td></tr>"
+    return Html(f'<table border="0" cellspacing="0" cellpadding="2">{bar}{body}</table>')
+
+
+def _parallel(n: Node, link_ext: str) -> str:
+    """One box: the state's name (and timer) over its lanes, divided by dashed lines."""
+    head = f'<tr><td colspan="{len(n.lanes)}">{_label(n.title, n.lines, n.stats)}</td></tr>'
+    cells = "".join(_lane(lane, i == 0, link_ext) for i, lane in enumerate(n.lanes))
+    return Html(
+        f'<table border="0" cellborder="0" cellspacing="0" cellpadding="4">{head}<tr>{cells}</tr></table>'
+    )
+
+
+def _lane(lane: Lane, first: bool, link_ext: str) -> str:
+    sides = "T" if first else "TL"
+    href = f' href="{_h(lane.link)}.{link_ext}"' if lane.link else ""
+    label = _label(lane.title, lane.lines, lane.stats)
+    if lane.emphasis == "faded":
+        label = f'<font color="{FADED}">{label}</font>'
+    return f'<td border="1" style="dashed" sides="{sides}"{href}>{label}</td>'
 
 
 def _label(title: str, lines: Sequence[str], stats: Sequence[str]) -> str:
@@ -140,7 +188,7 @@ def _emphasis(emphasis: Emphasis, style: str) -> dict[str, str]:
 
 def _edge(e: Edge) -> dict[str, str]:
     attrs = dict(STYLE[e.style])
-    label = " | ".join(e.labels)
+    label = labels(e.labels)
     if e.count is not None:
         label = f"{label} {TIMES}{e.count}" if label else f"{TIMES}{e.count}"
         width = max(min(1.0 + e.count.bit_length() * 0.5, 4.0), float(attrs.get("penwidth", 1)))
@@ -149,6 +197,8 @@ def _edge(e: Edge) -> dict[str, str]:
         attrs["label"] = label
     if e.ltail:
         attrs["ltail"] = e.ltail
+    if e.lhead:
+        attrs["lhead"] = e.lhead
     if e.emphasis == "faded":
         attrs.update({"color": FADED, "fontcolor": FADED})
     return attrs
@@ -163,7 +213,7 @@ def _caption(figure: Figure) -> str:
 
 
 def _wrap(caption: str) -> tuple[str, ...]:
-    return paragraph(caption) if caption else ()
+    return paragraph(caption, CAPTION_WIDTH, CAPTION_LINES) if caption else ()
 
 
 def _rank(rank: str, ids: Sequence[str], indent: str) -> str:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import itertools
 
-from hfsm.diagram.model import Edge, Figure, Item, Node, Style
+from hfsm.diagram.model import Edge, Figure, Item, Lane, Node, Style
 from hfsm.diagram.text import TIMES
 
 LEGEND = "legend"
@@ -22,6 +22,25 @@ _NODES: tuple[tuple[Node, str], ...] = (
     (
         Node("choice", "choice", "state"),
         "a choice state (diamond): its arcs carry the conditions, tried in order 1:, 2:, … then else",
+    ),
+    (
+        Node(
+            "parallel",
+            "parallel",
+            "state",
+            ("timer 30 s",),
+            lanes=(
+                Lane("a", ("primitive()",)),
+                Lane("b", ("machine()",)),
+                Lane("c", ("wait()", "background")),
+            ),
+        ),
+        "a parallel state: its regions a, b, c run at once, divided by dashed lines, each with its call; "
+        "a background region is never awaited; with --depth, each region is a dashed box holding its machine",
+    ),
+    (
+        Node("barrier", "barrier", "state", ('barrier(name="lift")',)),
+        "a state that calls barrier: a synchronisation bar (UML's fork and join): agents leave it together",
     ),
     (
         Node("timed", "builtin", "state", ('wait_for(message="go")', "timer 5 s")),
@@ -44,6 +63,18 @@ _EDGES: tuple[tuple[str, Style, str], ...] = (
     ("done", "success", "solid: a successful outcome of the callee, an ordinary event, a condition"),
     ("failure", "failure", "dashed: a failure outcome of the callee, 'timeout', 'error'"),
     ("message", "message", "dotted, bold: a message in 'receives'; it preempts the callee"),
+    (
+        "a=done, b=x|y",
+        "success",
+        "a join rule of a parallel state: each region named ended in its outcome (b in x or in y); "
+        "'else': every awaited region ended and no rule held",
+    ),
+    (
+        "[vars.n > 3]",
+        "success",
+        "a watch: its condition in brackets, tried on entry and every tick; the machine's own watches "
+        "leave from the border of its states",
+    ),
 )
 _OVERLAY = (
     f"with --trace: '{TIMES}n' counts visits of a state (with the time spent in it) and of an arc; "
@@ -64,14 +95,23 @@ def legend() -> Figure:
         firsts.append(node.id)
     for label, style, meaning in _EDGES:
         items += _arc_row(label, style, meaning, edges, rows, firsts)
+    retried = Node("retried", "primitive", "state", ("navigate()",))
+    note = Node(
+        "retried@note",
+        "note",
+        f"a retry: the call is made again, up to {TIMES}N more times, when it ends in one of these outcomes",
+    )
+    items += [retried, note]
+    edges.append(Edge("retried", "retried", (f"retry {TIMES}3: failed",), "failure"))
+    rows.append(("retried", note.id))
+    firsts.append("retried")
     visited = Node(
         "visited",
         "primitive",
         "state",
         ("walk(metres=1)",),
-        stats=(f"{TIMES}3, 12.5 s",),
+        stats=(f"{TIMES}3, 12.5 s", "end: a"),
         emphasis="ended",
-        xlabel="end: a",
     )
     faded = Node("unvisited", "primitive", "state", ("walk(metres=2)",), emphasis="faded")
     note = Node("overlay@note", "note", _OVERLAY)

@@ -15,13 +15,15 @@ Role = Literal[
     "primitive",  # a call state whose callee is a primitive: ellipse
     "builtin",  # a call state whose callee is a built-in behaviour: ellipse
     "choice",  # a choice state: diamond
+    "parallel",  # a parallel state drawn whole: one box divided by dashed lines into its lanes
+    "barrier",  # a state that calls `barrier`: a thick synchronisation bar (UML fork/join)
     "success",  # an outcome of the machine that is not a failure
     "failure",  # an outcome of the machine listed in its failures
     "timer",  # the machine's timer: solid black circle
     "start",  # the marker of the initial state
     "any",  # the source of the machine's `any:` arcs
     "note",  # plain text (legend)
-    "point",  # an invisible anchor (legend)
+    "point",  # an invisible anchor (legend; where the machine's watches leave its border)
 ]
 Style = Literal[
     "success",  # a successful outcome of the callee, an ordinary event, a condition: solid
@@ -35,6 +37,25 @@ Ref: TypeAlias = tuple[str, ...]
 """A state's path relative to the figure's machine: ('lift',), ('lift', 'signal'); trace overlay key."""
 
 Emphasis = Literal["normal", "faded", "ended"]
+ClusterKind = Literal[
+    "call",  # a state whose callee is drawn inline: rounded box
+    "parallel",  # a parallel state drawn with its regions inside: rounded box
+    "region",  # a region of a parallel state: dashed box
+    "machine",  # the border of the figure's own machine, from which its watches leave: no label
+]
+
+
+@dataclass(frozen=True)
+class Lane:
+    """A region of a parallel state drawn whole (at depth 0): its name, its call, whether awaited."""
+
+    title: str
+    lines: tuple[str, ...]
+    background: bool = False
+    ref: Ref | None = None
+    link: str = ""  # the figure of the region's machine
+    stats: tuple[str, ...] = ()
+    emphasis: Emphasis = "normal"
 
 
 @dataclass(frozen=True)
@@ -49,11 +70,13 @@ class Node:
     tooltip: str = ""
     stats: tuple[str, ...] = ()  # overlay lines: visits and time
     emphasis: Emphasis = "normal"
+    lanes: tuple[Lane, ...] = ()  # a parallel state's regions
 
 
 @dataclass(frozen=True)
 class Cluster:
-    """A state whose callee is drawn inline (--depth), holding the callee's own nodes."""
+    """A state whose callee is drawn inline (--depth), holding the callee's own nodes; or a parallel
+    state holding its regions, a region, the border of the figure's machine."""
 
     id: str
     title: str
@@ -65,6 +88,7 @@ class Cluster:
     tooltip: str = ""
     stats: tuple[str, ...] = ()
     emphasis: Emphasis = "normal"
+    kind: ClusterKind = "call"
 
 
 Item: TypeAlias = Node | Cluster
@@ -79,6 +103,7 @@ class Edge:
     ref: Ref | None = None  # the path of the state whose events these are (ANY last for `any:`)
     events: tuple[str, ...] = ()  # the events merged into this arc, for the overlay
     ltail: str = ""  # a cluster id the arc leaves from its border
+    lhead: str = ""  # a cluster id the arc ends at the border of
     count: int | None = None  # overlay: how often the arc was taken
     emphasis: Emphasis = "normal"
 

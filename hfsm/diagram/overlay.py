@@ -17,11 +17,11 @@ from hfsm.diagram import text
 from hfsm.diagram.extract import TIMER
 from hfsm.diagram.model import Cluster, Edge, Emphasis, Figure, Item, Ref
 from hfsm.diagram.text import TIMES
-from hfsm.graph import ANY
-from hfsm.model import CallState, Machine
+from hfsm.graph import ANY, WATCH
+from hfsm.model import CallState, Machine, ParallelState
 
 Key = tuple[str, Ref]  # (machine, path relative to it)
-_STATE_ROLES = ("machine", "primitive", "builtin", "choice")
+_STATE_ROLES = ("machine", "primitive", "builtin", "choice", "parallel", "barrier")
 
 
 @dataclass
@@ -66,16 +66,23 @@ def collect(records: Iterable[Mapping[str, Any]], machines: Mapping[str, Machine
 
 
 def _views(path: list[str], machines: Mapping[str, Machine]) -> list[Key]:
-    """(machine, path relative to it) for each machine on the path, outermost first."""
+    """(machine, path relative to it) for each machine on the path, outermost first.
+
+    Below a parallel state the next element is a region's name, whose `do` is the next machine.
+    """
     out: list[Key] = []
-    name = path[0]
-    for depth in range(len(path)):
+    name, i = path[0], 0
+    while i < len(path):
         machine = machines.get(name)
         if machine is None:
             break
-        out.append((name, tuple(path[depth + 1 :])))
-        state = machine.states.get(path[depth + 1]) if depth + 1 < len(path) else None
-        name = state.do if isinstance(state, CallState) else ""
+        out.append((name, tuple(path[i + 1 :])))
+        state = machine.states.get(path[i + 1]) if i + 1 < len(path) else None
+        if isinstance(state, ParallelState):
+            region = state.parallel.get(path[i + 2]) if i + 2 < len(path) else None
+            name, i = (region.do if region else ""), i + 2
+        else:
+            name, i = (state.do if isinstance(state, CallState) else ""), i + 1
     return out
 
 
@@ -83,8 +90,8 @@ def _event(
     stats: Stats, r: Mapping[str, Any], path: list[str], views: list[Key], machines: Mapping[str, Machine]
 ) -> None:
     event, target = str(r.get("event", "")), str(r.get("target"))
-    depth = len(path) - 2  # the depth of the machine whose state took the arc
-    owner = machines.get(views[depth][0]) if 0 <= depth < len(views) else None
+    holder = next((m for m, rel in reversed(views) if len(rel) == 1), "")  # whose state took the arc
+    owner = machines.get(holder)
     into_outcome = owner is not None and target in owner.all_outcomes
     for m, rel in views:
         if rel:
@@ -120,13 +127,22 @@ def apply(figure: Figure, machine: str, stats: Stats) -> Figure:
 def _item(item: Item, machine: str, stats: Stats) -> Item:
     if isinstance(item, Cluster):
         inner = tuple(_item(i, machine, stats) for i in item.items)
-        lines, emphasis, _ = _marks(item.ref, "machine", machine, stats)
-        return replace(item, items=inner, stats=lines, emphasis=emphasis)
+        lines, emphasis, ended = _marks(item.ref, "machine", machine, stats)
+        return replace(item, items=inner, stats=lines + _end(ended), emphasis=emphasis)
     lines, emphasis, ended = _marks(item.ref, item.role, machine, stats)
     if item.role not in (*_STATE_ROLES, "success", "failure"):
         return item
-    xlabel = f"end: {', '.join(ended)}" if ended else item.xlabel
-    return replace(item, stats=lines, emphasis=emphasis, xlabel=xlabel)
+    lanes = tuple(
+        replace(lane, stats=m[0], emphasis=m[1])
+        for lane in item.lanes
+        for m in [_marks(lane.ref, "machine", machine, stats)]
+    )
+    return replace(item, stats=lines + _end(ended), emphasis=emphasis, lanes=lanes)
+
+
+def _end(ended: list[str]) -> tuple[str, ...]:
+    """Where agents ended, as a line in the node (an xlabel could overlap its neighbours)."""
+    return (f"end: {', '.join(ended)}",) if ended else ()
 
 
 def _marks(
@@ -151,7 +167,7 @@ def _edge(e: Edge, machine: str, stats: Stats, claimed: set[tuple[Ref, str]]) ->
     if e.ref is None or e.style in ("start", "invisible"):
         return e
     count = sum(stats.arcs.get((machine, e.ref, ev), 0) for ev in e.events)
-    if e.ref[-1:] == (ANY,):
+    if e.ref[-1:] in ((ANY,), (WATCH,)):
         count += sum(
             n
             for (m, rel, ev), n in stats.arcs.items()
@@ -161,5 +177,5 @@ def _edge(e: Edge, machine: str, stats: Stats, claimed: set[tuple[Ref, str]]) ->
 
 
 def _sibling(rel: Ref, any_ref: Ref) -> bool:
-    """Whether a state's path lies in the machine whose `any:` arcs have this path."""
+    """Whether a state's path lies in the machine whose `any:` arcs (or watches) have this path."""
     return len(rel) == len(any_ref) and rel[:-1] == any_ref[:-1]

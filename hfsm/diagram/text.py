@@ -9,14 +9,17 @@ import textwrap
 from collections.abc import Mapping
 from typing import Any
 
-from hfsm.model import Param
+from hfsm.expr import ExprSyntaxError, ExprValueError, Names, Scope, compile_expr
+from hfsm.model import Param, Retry
 
 ELLIPSIS = "\u2026"
 TIMES = "\u00d7"  # before a count: visits, arcs taken
 VALUE_WIDTH = 18  # characters of one argument's value
 LINE_WIDTH = 34  # characters of one line of a call
-CONDITION_WIDTH = 30
+CONDITION_WIDTH = 30  # characters of one line of an arc's condition; longer ones wrap, never cut
+LABEL_WIDTH = 40  # an arc's merged labels stay on one line up to this width
 _WHOLE_EXPR = re.compile(r"^\$\{(.*)\}$", re.DOTALL)
+_SENTENCE_END = re.compile(r"(?<=[.!?])\s+(?=\S)")
 
 
 def shorten(text: str, width: int) -> str:
@@ -71,16 +74,51 @@ def call(do: str, args: Mapping[str, Any]) -> tuple[str, ...]:
     return tuple(lines)
 
 
-def timer(t: float | str) -> str:
-    """A timer's duration: `30 s`, or its expression."""
-    if isinstance(t, str):
-        match = _WHOLE_EXPR.match(t)
-        return shorten(match.group(1).strip() if match else t, VALUE_WIDTH) + " s"
-    return f"{number(t)} s"
+def timer(t: float | str, params: Mapping[str, Param] | None = None) -> str:
+    """A timer's duration: `30 s`, or its expression with its value from the params' defaults."""
+    return duration(t, params, " s")
+
+
+def duration(t: float | str, params: Mapping[str, Param] | None = None, unit: str = "") -> str:
+    """A number, or an expression shown with its value from the params' defaults: `params.limit (30 s)`."""
+    if not isinstance(t, str):
+        return f"{number(t)}{unit}"
+    match = _WHOLE_EXPR.match(t)
+    source = match.group(1).strip() if match else t
+    default = _by_default(source, params or {})
+    shown = shorten(source, VALUE_WIDTH)
+    return f"{shown} ({number(default)}{unit})" if default is not None else f"{shown}{unit}"
+
+
+def _by_default(source: str, params: Mapping[str, Param]) -> float | None:
+    """The expression's value when every param has its default; None when it has none or no number."""
+    defaults = {name: p.default for name, p in params.items() if not p.required}
+    try:
+        got = compile_expr(source, Names(params=defaults, vars=None))(Scope(defaults, {}, ""))
+    except (ExprSyntaxError, ExprValueError, ArithmeticError, TypeError, ValueError):
+        return None
+    return got if isinstance(got, int | float) and not isinstance(got, bool) else None
+
+
+def wrap(text: str, width: int = CONDITION_WIDTH) -> str:
+    """Text broken over lines (joined by newlines) of about `width` characters; nothing is cut."""
+    return "\n".join(textwrap.wrap(" ".join(text.split()), width, break_on_hyphens=False)) or text
 
 
 def condition(order: int, text: str) -> str:
-    return f"{order}: {shorten(text, CONDITION_WIDTH)}"
+    return wrap(f"{order}: {text}")
+
+
+def labels(parts: tuple[str, ...]) -> str:
+    """An arc's labels: on one line joined by ` | ` when short, else one label under the other."""
+    one = " | ".join(parts)
+    return one if "\n" not in one and len(one) <= LABEL_WIDTH else "\n".join(parts)
+
+
+def retry(r: Retry, params: Mapping[str, Param]) -> str:
+    """`retry ×3: a, error` (a times sign), with a delay `retry ×3, 1.5 s apart: …`."""  # noqa: RUF002
+    delay = "" if r.delay == 0 else f", {duration(r.delay, params, ' s')} apart"
+    return wrap(f"retry {TIMES}{duration(r.times, params)}{delay}: {', '.join(r.on)}")
 
 
 def params(items: Mapping[str, Param]) -> str:
@@ -93,8 +131,15 @@ def params(items: Mapping[str, Param]) -> str:
 
 
 def paragraph(text: str, width: int = 70, max_lines: int = 4) -> tuple[str, ...]:
-    """A doc paragraph wrapped into a few lines."""
-    lines = textwrap.wrap(" ".join(text.split()), width)
-    if len(lines) > max_lines:
-        lines = [*lines[: max_lines - 1], shorten(" ".join(lines[max_lines - 1 :]), width)]
-    return tuple(lines)
+    """A doc wrapped into lines: its first sentences that fit in `max_lines`, never cut mid-sentence.
+
+    The first sentence is always shown whole, however long; a doc cut short ends with an ellipsis.
+    """
+    sentences = _SENTENCE_END.split(" ".join(text.split()))
+    kept = sentences[:1]
+    for sentence in sentences[1:]:
+        if len(textwrap.wrap(" ".join([*kept, sentence]), width)) > max_lines:
+            break
+        kept.append(sentence)
+    shown = " ".join(kept) + (f" {ELLIPSIS}" if len(kept) < len(sentences) else "")
+    return tuple(textwrap.wrap(shown, width))

@@ -16,7 +16,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 def test_a_folder_gives_a_figure_per_machine_the_call_graph_and_the_legend(tmp_path: Path) -> None:
     assert main([str(DATA), "-o", str(tmp_path), "--format", "svg,dot"]) == 0
-    stems = {"lift", "move_table", "relay", "call-graph", "legend"}
+    stems = {"lift", "move_table", "relay", "search", "call-graph", "legend"}
     assert {p.name for p in tmp_path.iterdir()} == {f"{s}.{f}" for s in stems for f in ("svg", "dot")}
     assert 'href="lift.svg"' in (tmp_path / "move_table.dot").read_text()
 

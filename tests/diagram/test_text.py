@@ -4,7 +4,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from hfsm.diagram import text
-from hfsm.model import Param
+from hfsm.model import Param, Retry
 
 
 def test_values_read_as_in_the_machine_file() -> None:
@@ -17,7 +17,7 @@ def test_values_read_as_in_the_machine_file() -> None:
     assert text.value(None) == "null"
     assert text.value([1, 2]) == "[1, 2]"
     assert text.value({"hits": "${vars.hits + 1}"}) == "{hits: vars.hits\u2026"
-    assert text.value({"a": "b"}) == "{a: \"b\"}"
+    assert text.value({"a": "b"}) == '{a: "b"}'
 
 
 def test_long_values_are_cut_with_an_ellipsis() -> None:
@@ -37,17 +37,41 @@ def test_a_call_breaks_after_commas() -> None:
 def test_timers_params_and_conditions() -> None:
     assert text.timer(30) == "30 s"
     assert text.timer(0.5) == "0.5 s"
-    assert text.timer("${params.limit}") == "params.limit s"
+    assert text.timer("${params.limit}") == "params.limit s"  # no default: no value to show
+    limit = {"limit": Param(type="float", default=30), "n": Param(type="int")}
+    assert text.timer("${params.limit}", limit) == "params.limit (30 s)"
+    assert text.timer("${params.limit * 2}", limit) == "params.limit * 2 (60 s)"
+    assert text.timer("${params.n}", limit) == "params.n s"
+    assert text.timer("${state.time}", limit) == "state.time s"
     assert text.params({}) == ""
     params = {"steps": Param(type="int", default=3), "role": Param(type="str")}
     assert text.params(params) == "(steps: int = 3, role: str)"
     assert text.condition(2, "vars.n < 0") == "2: vars.n < 0"
+    assert text.retry(Retry(on=["failed", "error"], times=3), {}) == "retry \u00d73: failed, error"
+    tries = {"tries": Param(type="int", default=2)}
+    shown = text.retry(Retry(on=["failed"], times="${params.tries}", delay=1.5), tries)
+    assert shown == "retry \u00d7params.tries (2), 1.5 s\napart: failed"
 
 
-def test_paragraphs_are_wrapped_and_bounded() -> None:
-    lines = text.paragraph("word " * 200, width=40, max_lines=3)
-    assert len(lines) == 3
-    assert all(len(line) <= 40 for line in lines)
+def test_conditions_are_wrapped_over_lines_never_cut() -> None:
+    long = "abs(vars.left - vars.right) > params.difference * max(vars.left, vars.right)"
+    shown = text.condition(1, long)
+    assert text.ELLIPSIS not in shown
+    assert shown.replace("\n", " ") == f"1: {long}"
+    assert all(len(line) <= text.CONDITION_WIDTH for line in shown.split("\n"))
+    assert text.labels(("done", "failed")) == "done | failed"
+    assert text.labels((shown, "2: vars.n < 0")) == f"{shown}\n2: vars.n < 0"
+
+
+def test_paragraphs_end_with_a_sentence() -> None:
+    doc = "One two three. Four five six seven. " + "Eight nine ten eleven. " * 20
+    lines = text.paragraph(doc, width=40, max_lines=3)
+    assert len(lines) <= 3 and all(len(line) <= 40 for line in lines)
+    shown = " ".join(lines)
+    assert shown.startswith("One two three. Four five six seven.") and shown.endswith(". \u2026")
+    whole = text.paragraph("word " * 100 + "end.", width=40, max_lines=3)  # one sentence: all of it
+    assert " ".join(whole) == " ".join(["word"] * 100) + " end."
+    assert text.paragraph("Short. Doc.") == ("Short. Doc.",)
 
 
 @given(st.text(), st.integers(min_value=2, max_value=80))

@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+import random
 from collections.abc import Callable
 from pathlib import Path
 
 import pytest
-from helpers import execute
+from helpers import execute, write
+from hypothesis import given
+from hypothesis import strategies as st
 
 from hfsm.primitive import Message
 from hfsm.runtime.failing import Failure
@@ -222,3 +225,114 @@ def test_named_agents_only(machine: Machine) -> None:
     )
     # c arrives at 5 and holds a's answer two ticks later: a, gone on, answers what c sends.
     assert ended(result) == {"a": ("done", 0.25, ["b"]), "b": ("done", 0.25, ["a"]), "c": ("done", 5.1, ["a"])}
+
+
+def test_a_barrier_in_a_region_meets_a_partner_while_the_other_region_runs(machine: Machine) -> None:
+    path = machine(
+        "m",
+        """
+        vars: {who: []}
+        outcomes: [done, late]
+        outputs: {who: "${vars.who}"}
+        states:
+          start:
+            choose:
+              - {if: "agent.id == 'a'", then: both}
+              - {else: walk}
+          both:
+            parallel:
+              meet: {do: barrier, with: {name: n}, save: {who: arrived}}
+              walk: {do: wait, with: {seconds: 1}}
+            join:
+              - {when: {meet: passed, walk: done}, then: done}
+            timer: 5
+            on: {timeout: late}
+          walk: {do: wait, with: {seconds: 0.3}, on: {done: meet}}
+          meet: {do: barrier, with: {name: n}, save: {who: arrived}, on: {passed: done}}
+        """,
+    )
+    result, records = execute(path, agents=["a", "b"])
+    assert ended(result) == {"a": ("done", 1.0, ["b"]), "b": ("done", 0.35, ["a"])}
+    passed = [r for r in records if r.get("event") == "passed" and r["kind"] == "exit"]
+    assert [(r["agent"], r["t"], r["path"]) for r in passed] == [
+        ("a", 0.35, ["m", "both", "meet"]),
+        ("b", 0.35, ["m", "meet"]),
+    ]
+
+
+def test_a_barrier_cancelled_by_its_timer_leaves_the_team_and_counts_its_round(machine: Machine) -> None:
+    path = machine(
+        "m",
+        """
+        vars: {tries: 0}
+        outcomes: [done, gave_up]
+        outputs: {tries: "${vars.tries}"}
+        states:
+          walk: {do: wait, with: {seconds: "${0 if agent.id == 'a' else 0.5}"}, on: {done: meet}}
+          meet:
+            do: barrier
+            with: {name: n}
+            timer: 0.2
+            on: {passed: done, timeout: again}
+          again: {do: set, with: {tries: "${vars.tries + 1}"}, on: {done: retry}}
+          retry:
+            choose:
+              - {if: "vars.tries < 4", then: meet}
+              - {else: gave_up}
+        """,
+    )
+    result, _ = execute(path, agents=["a", "b"])
+    # a re-enters every 0.2 s (rounds 1 to 4): b, in round 1 from 0.5, holds a's round 3 and passes
+    # in the next tick; a needs b's round to reach its own, which it never does (SPEC 14's rounds).
+    assert {n: (r.outcome, r.time, r.outputs) for n, r in result.agents.items()} == {
+        "a": ("gave_up", 0.8, {"tries": 4}),
+        "b": ("done", 0.55, {"tries": 0}),
+    }
+
+
+@pytest.fixture(scope="module")
+def meet_file(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return write(tmp_path_factory.mktemp("barrier"), "meet", MEET.replace('agents: "${params.partners[agent.id]}", ', ""))
+
+
+@given(arrivals=st.lists(st.integers(min_value=0, max_value=30), min_size=1, max_size=5))
+def test_without_loss_everyone_passes_one_tick_after_the_last_arrives(meet_file: Path, arrivals: list[int]) -> None:
+    names = [f"a{i}" for i in range(len(arrivals))]
+    walk = {n: k * 0.05 for n, k in zip(names, arrivals, strict=True)}
+    result, records = execute(meet_file, agents=names, params={"walk": walk})
+    last = round((max(arrivals) + 1) * 0.05, 9)
+    assert result.error is None
+    assert ended(result) == {n: ("done", last, [m for m in names if m != n]) for n in names}
+    assert {r["kind"] for r in records} <= {"enter", "event", "exit"}
+
+
+class RandomLoss(NullWorld):
+    """Loses each notice or answer with probability `loss` (seeded); messages are never lost."""
+
+    static = False
+
+    def __init__(self, loss: float, seed: int) -> None:
+        super().__init__()
+        self.loss = loss
+        self.rng = random.Random(seed)
+
+    def post(self, message: Message) -> None:
+        if message.name == NOTICE and self.rng.random() < self.loss:
+            return
+        super().post(message)
+
+
+@given(
+    arrivals=st.lists(st.integers(min_value=0, max_value=20), min_size=2, max_size=4),
+    loss=st.floats(min_value=0.0, max_value=0.8),
+    seed=st.integers(0, 1000),
+)
+def test_with_loss_everyone_still_passes_and_never_early(
+    meet_file: Path, arrivals: list[int], loss: float, seed: int
+) -> None:
+    names = [f"a{i}" for i in range(len(arrivals))]
+    walk = {n: k * 0.05 for n, k in zip(names, arrivals, strict=True)}
+    result, _ = execute(meet_file, agents=names, params={"walk": walk}, world=RandomLoss(loss, seed), max_time=60)
+    assert result.error is None
+    first = round((max(arrivals) + 1) * 0.05, 9)
+    assert all(r.outcome == "done" and r.time >= first for r in result.agents.values())
