@@ -56,7 +56,7 @@ def test_a_parallel_state_is_one_box_divided_into_its_lanes() -> None:
     assert to_lift.target == "lift" and to_lift.events[0] == "move=at_wall"
     assert any(label.startswith("[abs(vars.left") and label.endswith("]") for label in to_lift.labels)
     failing = next(e for labels, e in out.items() if "else" in labels)
-    assert failing.labels == ("move=failure,\nlisten=received", "else")
+    assert failing.labels == ("move=failure, listen=received", "else")
     dot = to_dot(fig)
     assert 'style="dashed" sides="TL"' in dot and "<i>background</i>" in dot
 
