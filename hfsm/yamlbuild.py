@@ -194,7 +194,7 @@ class EventBuilder:
         if not parent.is_list and parent.key is _NO_KEY:
             return False
         self.nodes += 1
-        mark = event.start_mark
+        mark: Any = event.start_mark
         pos = (mark.line + 1, mark.column + 1)
         if self.nodes > MAX_NODES:
             raise TooBig(pos, f"the document has more than {MAX_NODES:,} nodes")
