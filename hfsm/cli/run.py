@@ -16,6 +16,7 @@ from hfsm.cli.params import parse_params
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import UsageError, UserError
 from hfsm.load import Loaded, load
+from hfsm.monitor import live
 from hfsm.names import is_name
 from hfsm.registry import Registry
 from hfsm.runtime.program import Program
@@ -70,6 +71,7 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     )
     for factory in factories.values():
         factory.add_arguments(p.add_argument_group(f"--world {factory.name}"))
+    live.add_arguments(p)
     return p
 
 
@@ -151,11 +153,14 @@ def _run(
     program = Program(loaded.machines, registry, args.dt)
     trace_path = args.trace or world.default_trace
     trace = _open_trace(trace_path) if trace_path else None
+    sink, monitor = live.sinks(args, trace, loaded, registry, top.name)
     try:
-        result = run(program, world, options, trace)
+        result = run(program, world, options, sink)
     finally:
-        if trace:
-            trace.close()
+        if sink:
+            sink.close()
+    if monitor is not None:
+        monitor.finish(args.monitor_hold)
     extra = world.report()
     if args.json:
         print(report.json_result(result, extra))
