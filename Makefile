@@ -37,6 +37,11 @@ figures: $(STAMP)
 	$(BIN)/hfsm-graph machines -o docs/figures --format svg,dot --prune
 	$(BIN)/hfsm-graph examples -o docs/figures/examples --format svg,dot --no-legend --prune
 
+# Primitives' declarations, read without importing the simulator: see behaviours/registry.py.
+.PHONY: declarations
+declarations: $(STAMP)
+	$(BIN)/python -m hfsm.declarations behaviours.registry:primitives > behaviours/primitives.json
+
 # Engine against its peers (transitions, python-statemachine, sismic, a dict floor): see docs/PERFORMANCE.md.
 .PHONY: bench
 bench: $(STAMP)

@@ -1,12 +1,30 @@
-"""The `hfsm.primitives` entry point: every primitive of this package."""
+"""The `hfsm.primitives` entry point: every primitive of this package, declared as data.
+
+`primitives.json` holds their declarations, so checking, listing and drawing machines never import
+the simulator; a function is imported when a run first calls it. Regenerate it after adding or
+changing a primitive (a test fails when it is stale):
+
+    make declarations
+"""
 
 from __future__ import annotations
 
+from importlib.resources import files
+
+from hfsm.declarations import loads
+from hfsm.primitive import Primitive
 from hfsm.registry import Registry
+
+DECLARATIONS = "primitives.json"
 
 
 def register(registry: Registry) -> None:
-    """Add this package's primitives to a registry."""
+    """Add this package's primitives to a registry, from their declarations."""
+    registry.add(*loads(files("behaviours").joinpath(DECLARATIONS).read_text(encoding="utf-8")))
+
+
+def primitives() -> tuple[Primitive, ...]:
+    """The primitives themselves (imports the simulator): what `primitives.json` is made from."""
     from behaviours import approach, carry
 
-    registry.add(*approach.PRIMITIVES, *carry.PRIMITIVES)
+    return (*approach.PRIMITIVES, *carry.PRIMITIVES)

@@ -11,10 +11,13 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
+from behaviours.inputs import SIM_INPUTS
+from behaviours.senses import Senses
 from hfsm import located
 from hfsm.errors import UsageError
 from hfsm.primitive import Message
-from hfsm.world import NO_INPUTS, InputSpec
+from hfsm.runtime.program import span_ticks
+from hfsm.world import InputSpec
 from hfsm.yamlio import read_mapping
 from sim import Robot, Scenario, World, resolve
 
@@ -50,6 +53,7 @@ class SimWorld:
         self.progress_every = progress_every
         self._outputs = list(outputs)
         self._next_progress = progress_every
+        self._senses: dict[str, Senses] = {}
 
     def agent_names(self) -> list[str]:
         return list(self.world.robots)
@@ -61,10 +65,14 @@ class SimWorld:
         return self.world.robots[agent]
 
     def inputs(self) -> Mapping[str, InputSpec]:
-        return NO_INPUTS
+        return SIM_INPUTS
 
     def read_input(self, agent: str, name: str, tick: int) -> Any:
-        raise KeyError(f"world 'sim' declares no input '{name}'")
+        senses = self._senses.get(agent)
+        if senses is None:
+            own = list(self.world.robots).index(agent)  # robots wear the colours in scenario order
+            senses = self._senses[agent] = Senses(self.world.robots[agent], own)
+        return senses.read(name, tick)
 
     def post(self, message: Message) -> None:
         self.world.radio.send(message.sender, message.to, message, message.sent_tick * self.dt)
@@ -84,7 +92,15 @@ class SimWorld:
             self._progress()
 
     def failures(self, tick: int) -> Sequence[tuple[str, str]]:
-        return ()
+        """The scenario's failures due now, and robots whose battery is empty."""
+        due = [(f.robot, f.reason) for f in self.world.scenario.failures if span_ticks(f.at, self.dt) == tick]
+        for name, robot in self.world.robots.items():
+            if robot.battery() <= 0.0 and not robot.failed:
+                due.append((name, "battery empty"))
+        return due
+
+    def fail(self, agent: str) -> None:
+        self.world.fail(agent)
 
     def _progress(self) -> None:
         minutes, seconds = divmod(self.world.time, 60)

@@ -11,8 +11,9 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from behaviours.inputs import SIM_INPUTS
 from hfsm.errors import UsageError
-from hfsm.world import NO_INPUTS, InputSpec
+from hfsm.world import InputSpec
 
 if TYPE_CHECKING:
     from behaviours.simworld import SimWorld
@@ -24,7 +25,7 @@ class SimWorldFactory:
     name = "sim"
 
     def inputs(self) -> Mapping[str, InputSpec]:
-        return NO_INPUTS
+        return SIM_INPUTS
 
     def add_arguments(self, group: argparse._ArgumentGroup) -> None:
         group.add_argument(

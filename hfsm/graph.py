@@ -1,4 +1,4 @@
-"""A machine's arcs as plain values, and as networkx graphs for the checks and the diagrams."""
+"""A machine's arcs as plain values, and as small graphs (hfsm.digraph) for the checks and the diagrams."""
 
 from __future__ import annotations
 
@@ -6,8 +6,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Literal
 
-import networkx as nx
-
+from hfsm import digraph
 from hfsm.model import CallState, ChoiceState, IfBranch, JoinRule, Machine, Watch, state_calls
 from hfsm.spec import BehaviourSpec
 
@@ -85,9 +84,9 @@ def _kind(event: str, failures: frozenset[str], receives: set[str]) -> ArcKind:
     return "message" if event in receives else "outcome"
 
 
-def state_graph(m: Machine, machine_arcs: list[Arc]) -> nx.MultiDiGraph:
+def state_graph(m: Machine, machine_arcs: list[Arc]) -> digraph.MultiDiGraph:
     """Nodes ('state', name) and ('outcome', name); `any:` arcs drawn from every state."""
-    g = nx.MultiDiGraph()
+    g = digraph.MultiDiGraph()
     g.add_nodes_from((("state", s) for s in m.states), role="state")
     g.add_nodes_from((("outcome", o) for o in m.all_outcomes), role="outcome")
     for arc in machine_arcs:
@@ -109,10 +108,10 @@ def state_graph(m: Machine, machine_arcs: list[Arc]) -> nx.MultiDiGraph:
     return g
 
 
-def call_graph(machines: Mapping[str, Machine]) -> nx.DiGraph:
+def call_graph(machines: Mapping[str, Machine]) -> digraph.DiGraph:
     """Machines and what they call (a parallel state calls its regions' behaviours); edge attribute
     `states` lists the calling states."""
-    g = nx.DiGraph()
+    g = digraph.DiGraph()
     for name, m in machines.items():
         g.add_node(name)
         for state_name, state in m.states.items():

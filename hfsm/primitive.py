@@ -10,6 +10,7 @@ start (first call), tick (each resume), cancel (`Cancelled`).
 
 from __future__ import annotations
 
+import importlib
 import inspect
 import logging
 import math
@@ -18,6 +19,7 @@ import types
 import typing
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any, Protocol
 
 from hfsm.spec import BehaviourSpec, ParamSpec
@@ -85,8 +87,29 @@ PrimitiveFn = Callable[..., "str | Outcome"]
 
 @dataclass(frozen=True)
 class Primitive:
+    """A declared primitive. `target` is the function, or `"module:function"` imported at first use:
+    so commands that only read the declarations (check, list, draw) never import the simulator."""
+
     spec: BehaviourSpec
-    fn: PrimitiveFn
+    target: PrimitiveFn | str
+
+    @cached_property
+    def fn(self) -> PrimitiveFn:
+        if not isinstance(self.target, str):
+            return self.target
+        module, _, attr = self.target.partition(":")
+        found = getattr(importlib.import_module(module), attr)
+        fn = found.fn if isinstance(found, Primitive) else found
+        if not callable(fn):
+            raise TypeError(f"primitive '{self.spec.name}': {self.target} is not a function")
+        return fn
+
+    @property
+    def where(self) -> str:
+        """`module:function`, without importing it."""
+        if isinstance(self.target, str):
+            return self.target
+        return f"{self.target.__module__}:{self.target.__qualname__}"
 
 
 def primitive(

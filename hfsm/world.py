@@ -68,6 +68,10 @@ class World(Protocol):
         on its own must not be static.
         """
 
+    def fail(self, agent: str) -> None:
+        """The agent failed (by this world or by `--fail`): its body stops, drops what it holds
+        and goes silent."""
+
     def report(self) -> dict[str, Any]:
         """Extra top-level keys for `--json`, e.g. {"score": {...}}."""
 
@@ -135,6 +139,9 @@ class NullWorld(PerfectRadio):
 
     def failures(self, tick: int) -> Sequence[tuple[str, str]]:
         return ()
+
+    def fail(self, agent: str) -> None:
+        pass
 
     def report(self) -> dict[str, Any]:
         return {}

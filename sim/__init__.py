@@ -33,6 +33,9 @@ Public API (what the behaviours layer uses)::
     robot.hand_load() -> HandLoad(force, left, right)  # body frame: N on both hands,
                                                #   each hand's give (m) off the arm's posture
     robot.bumped() -> bool                     # body touched something in the last advance
+    robot.battery() -> float                   # charge 0..1 (scenario `battery:` coefficients)
+    world.fail(name)                           # the robot stops, drops what it holds, goes
+                                               #   silent (scenario `failures:`, or the engine)
 
 Scenarios: `scenario_from_dict(data)` validates parsed YAML, `resolve(name_or_path)` finds
 a shipped scenario by name or a file by path, `load_scenario(name_or_path)` does both.

@@ -78,9 +78,18 @@ class Lifting:
         self._arms: dict[str, Arms] = {}
         self.slip = math.radians(slip_deg)
         self.dropped = False
+        self._limp: set[str] = set()  # robots that failed: their hands hold nothing, ever again
 
     def bind(self, arms: Mapping[str, Arms]) -> None:
         self._arms = dict(arms)
+
+    def let_go(self, name: str) -> None:
+        """A robot that failed: its hands release what they hold and never grip again."""
+        self._limp.add(name)
+        hands = self._hands[name]
+        for grip in list(hands.grips):
+            self._release(hands, grip)
+        hands.give, hands.load = [ZERO, ZERO], ZERO
 
     def holding(self, name: str) -> bool:
         return bool(self._hands[name].grips)
@@ -96,7 +105,7 @@ class Lifting:
         """Call after every physics step."""
         table: Pose | None = None
         for name, hands in self._hands.items():
-            if not hands.grips and not self._arms[name]._arms_active():
+            if not hands.grips and (name in self._limp or not self._arms[name]._arms_active()):
                 hands.previous = None
                 continue
             table = table or self._table_pose()

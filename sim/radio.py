@@ -28,10 +28,18 @@ class Radio:
         self._counter = itertools.count()
         self.sent = 0
         self.lost = 0
+        self._silent: set[str] = set()
+
+    def silence(self, name: str) -> None:
+        """A robot that failed: from now on it sends nothing and hears nothing."""
+        self._silent.add(name)
 
     def send(self, sender: str, to: str, payload: Any, t: float) -> bool:
         """Queue a message sent at time t; returns False if it will be lost."""
         self.sent += 1
+        if sender in self._silent:
+            self.lost += 1
+            return False
         if self.loss > 0.0 and float(self._rng.random()) < self.loss:
             self.lost += 1
             return False
@@ -43,7 +51,9 @@ class Radio:
         """Remove and return the messages that have arrived by time t."""
         out: list[Message] = []
         while self._queue and self._queue[0][0] <= t + 1e-9:
-            out.append(heapq.heappop(self._queue)[2])
+            message = heapq.heappop(self._queue)[2]
+            if message[1] not in self._silent:
+                out.append(message)
         return out
 
     def pending(self) -> int:

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 import pybullet as p
 
+from sim.battery import Battery
 from sim.body import ARMS, HEAD, NECK, RobotBody, drive_joint, yaw_of
 from sim.camera import CameraModel, camera_model, camera_spec, render
 from sim.odometry import Odometry, wrap
@@ -76,7 +77,8 @@ class Robot:
     def __init__(self, cid: int, name: str, body: RobotBody, motion: MotionProfile,
                  rng: np.random.Generator, image_size: tuple[int, int],
                  holding: Callable[[], bool],
-                 load: Callable[[], tuple[np.ndarray, np.ndarray]]) -> None:
+                 load: Callable[[], tuple[np.ndarray, np.ndarray]],
+                 battery: Battery | None = None) -> None:
         self.name = name
         self.profile = motion
         self._cid, self._body, self._g = cid, body, body.geometry
@@ -90,11 +92,16 @@ class Robot:
         self._head_target = (0.0, 0.0)
         self._arm_target = motion.arm_low
         self._bumped = False
+        self._battery = battery
+        self._last_xy = pose[:2]
+        self.failed = False
 
     # motion
     def set_velocity(self, forward: float, sideways: float, turn: float) -> None:
         """Walk velocity in the body frame (m/s forward, m/s to the left, rad/s counter-
         clockwise), clamped to the profile and held until changed."""
+        if self.failed:
+            return
         m = self.profile
         cmd = (_clamp(forward, -m.backward_max, m.forward_max),
                _clamp(sideways, -m.sideways_max, m.sideways_max),
@@ -114,6 +121,10 @@ class Robot:
         """(x, y, yaw) in the robot's own start frame, with seeded drift."""
         return self._odometry.pose()
 
+    def battery(self) -> float:
+        """The battery's charge, 0 (empty) to 1 (full); 1 when the scenario models no battery."""
+        return 1.0 if self._battery is None else self._battery.level
+
     def bumped(self) -> bool:
         """True if the body touched something during the last `World.advance`."""
         return self._bumped
@@ -121,6 +132,8 @@ class Robot:
     # head
     def set_head(self, yaw: float, pitch: float) -> None:
         """Head joint targets in radians (yaw left positive, pitch down positive), clamped."""
+        if self.failed:
+            return
         m = self.profile
         self._head_target = (_clamp(yaw, -m.head_yaw_max, m.head_yaw_max),
                              _clamp(pitch, m.head_pitch_min, m.head_pitch_max))
@@ -159,6 +172,8 @@ class Robot:
 
     def arms_lift(self, height: float) -> None:
         """Move the hands to `height` metres above the floor (clamped to the arm range)."""
+        if self.failed:
+            return
         m = self.profile
         self._arm_target = _clamp(height, m.arm_low, m.arm_high)
         drive_joint(self._cid, self._body.body, ARMS, self._arm_target - self._g.hover,
@@ -223,6 +238,15 @@ class Robot:
         self._target = (x, y, yaw)
         self._push_target()
 
-    def _after_advance(self, bumped: bool) -> None:
-        self._odometry.update(self._true_pose())
+    def _after_advance(self, bumped: bool, seconds: float = 0.0) -> None:
+        pose = self._true_pose()
+        self._odometry.update(pose)
         self._bumped = bumped
+        if self._battery is not None:
+            self._battery.drain(seconds, math.dist(pose[:2], self._last_xy))
+        self._last_xy = pose[:2]
+
+    def _fail(self) -> None:
+        """It stops where it stands and takes no more commands (the world lets go of its load)."""
+        self.stop()
+        self.failed = True

@@ -14,7 +14,16 @@ from typing import Annotated, Any
 
 import numpy as np
 import yaml
-from pydantic import BaseModel, ConfigDict, Field, StringConstraints, model_validator
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Field,
+    StringConstraints,
+    ValidationInfo,
+    field_validator,
+    model_validator,
+)
+from pydantic_core import PydanticCustomError
 
 DEFAULT_SCENARIO = "opposite_long_side"
 RobotName = Annotated[str, StringConstraints(pattern=r"^[a-z][a-z0-9_]*$")]
@@ -57,12 +66,40 @@ class Jitter(_Strict):
     yaw: float = Field(0.0, ge=0.0, le=180.0, description="max offset, degrees")
 
 
+class Battery(_Strict):
+    """A robot's charge, 0..1: it falls with time and with the distance walked; empty, it fails."""
+
+    start: float = Field(1.0, gt=0.0, le=1.0, description="charge at t = 0")
+    idle: float = Field(0.0002, ge=0.0, le=1.0, description="charge spent per second")
+    walk: float = Field(0.002, ge=0.0, le=1.0, description="charge spent per metre walked")
+
+
+class FailureSpec(_Strict):
+    """A robot that fails (stops, drops what it holds, goes silent) at a time of the run."""
+
+    robot: RobotName
+    at: float = Field(ge=0.0, allow_inf_nan=False, description="seconds into the run")
+    reason: str = "failed"
+
+
 class Scenario(_Strict):
     description: str = ""
     room: Room = Room()
     table: TableSpec = TableSpec()
     robots: dict[RobotName, RobotStart] = Field(min_length=1, max_length=5)
     jitter: Jitter = Jitter()
+    battery: Battery = Battery()
+    failures: list[FailureSpec] = []
+
+    @field_validator("failures")
+    @classmethod
+    def _known_robots(cls, failures: list[FailureSpec], info: ValidationInfo) -> list[FailureSpec]:
+        robots = info.data.get("robots") or {}
+        for i, failure in enumerate(failures):
+            if failure.robot not in robots:
+                names = ", ".join(robots)
+                raise PydanticCustomError("unknown_robot", f"[{i}] names no robot of the scenario ({names})")
+        return failures
 
     @model_validator(mode="after")
     def _inside_room(self) -> Scenario:

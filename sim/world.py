@@ -8,6 +8,7 @@ from typing import Any, Protocol
 import numpy as np
 import pybullet as p
 
+from sim.battery import Battery
 from sim.body import build_robot
 from sim.lifting import Lifting
 from sim.profile import DEFAULT_BODY, DEFAULT_MOTION, ROBOT_COLOURS, BodyGeometry, MotionProfile
@@ -51,7 +52,7 @@ class World:
             self.robots: dict[str, Robot] = {
                 name: Robot(cid, name, b, motion, np.random.default_rng([seed, i, 0x0D0]),
                             image_size, partial(self._lifting.holding, name),
-                            partial(self._lifting.load, name))
+                            partial(self._lifting.load, name), Battery(scenario.battery))
                 for i, (name, b) in enumerate(bodies.items())}
             self._lifting.bind(self.robots)
             self.truth = Truth(cid, scenario.room, room, table, bodies)
@@ -81,6 +82,7 @@ class World:
         """Step physics for `seconds` (rounded to whole physics steps) under held commands."""
         cid, dt = self.client, 1.0 / self.physics_hz
         end = round((self.time + seconds) * self.physics_hz)
+        start = self._steps
         robots = list(self.robots.values())
         while self._steps < end:
             for robot in robots:
@@ -92,8 +94,14 @@ class World:
             self._capture()
         bumps = self._scorer.take_bumps()
         for name, robot in self.robots.items():
-            robot._after_advance(bumps[name])
+            robot._after_advance(bumps[name], (self._steps - start) / self.physics_hz)
         self._scorer.check_poses()
+
+    def fail(self, name: str) -> None:
+        """Robot `name` fails: it stops, drops what it holds and goes silent on the radio."""
+        self.robots[name]._fail()
+        self._lifting.let_go(name)
+        self.radio.silence(name)
 
     def _capture(self) -> None:
         if self._recorder is not None and self.time + 1e-9 >= self._next_capture:

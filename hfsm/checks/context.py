@@ -6,8 +6,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 from functools import cached_property
 
-import networkx as nx
-
+from hfsm import digraph
 from hfsm.builtins import BUILTINS
 from hfsm.errors import Finding, Severity
 from hfsm.graph import call_graph
@@ -48,7 +47,7 @@ class CheckContext:
         return specs
 
     @cached_property
-    def calls(self) -> nx.DiGraph:
+    def calls(self) -> digraph.DiGraph:
         """Who calls whom, among the loaded machines and what they call."""
         return call_graph({name: m.model for name, m in self.machines.items()})
 

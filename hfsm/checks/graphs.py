@@ -4,16 +4,16 @@ from __future__ import annotations
 
 from functools import cache
 
-import networkx as nx
-
+from hfsm import digraph
 from hfsm.checks.context import CheckContext
 from hfsm.graph import arcs, state_graph
 from hfsm.library import MachineFile
 from hfsm.model import CallState, ChoiceState
 
 
-def _cyclic_components(g: nx.DiGraph | nx.MultiDiGraph) -> list[set[object]]:
-    return [c for c in nx.strongly_connected_components(g) if len(c) > 1 or any(g.has_edge(n, n) for n in c)]
+def _cyclic_components(g: digraph.MultiDiGraph) -> list[set[object]]:
+    components = digraph.strongly_connected_components(g)
+    return [c for c in components if len(c) > 1 or any(g.has_edge(n, n) for n in c)]
 
 
 def check_recursion(ctx: CheckContext) -> None:
@@ -27,8 +27,8 @@ def check_recursion(ctx: CheckContext) -> None:
                     ctx.error(mf, ("states", state, "do"), "E312", f"'{caller}' calls itself: {chain}")
 
 
-def _cycle_through(g: nx.DiGraph, caller: str, callee: str) -> list[str]:
-    back = nx.shortest_path(g, callee, caller) if callee != caller else [caller]
+def _cycle_through(g: digraph.DiGraph, caller: str, callee: str) -> list[str]:
+    back = digraph.shortest_path(g, callee, caller) if callee != caller else [caller]
     return [caller, *back]
 
 
@@ -43,7 +43,7 @@ def check_state_graph(ctx: CheckContext, mf: MachineFile) -> None:
     initial = ("state", m.initial_state)
     if initial not in g:
         return
-    reached = nx.descendants(g, initial) | {initial}
+    reached = digraph.descendants(g, initial) | {initial}
     for name in m.states:
         if ("state", name) not in reached:
             ctx.warn(
@@ -57,13 +57,13 @@ def check_state_graph(ctx: CheckContext, mf: MachineFile) -> None:
         _warn_loops(ctx, mf, _ordinary(g, reached))
 
 
-def _ordinary(g: nx.MultiDiGraph, reached: set[object]) -> nx.DiGraph:
-    """The reached states and their arcs but the common error ones, as a plain graph: filtered views
-    of networkx cost a Python call per edge visited, which made large machines check slowly."""
-    out = nx.DiGraph()
+def _ordinary(g: digraph.MultiDiGraph, reached: set[object]) -> digraph.DiGraph:
+    """The reached states and their arcs but the common error ones, as a plain graph."""
+    out = digraph.DiGraph()
     out.add_nodes_from(reached)
-    edges = g.edges(data=True)
-    out.add_edges_from((u, v) for u, v, d in edges if u in reached and v in reached and not _common_error(d))
+    for u, v, _, d in g.edge_items():
+        if u in reached and v in reached and not _common_error(d):
+            out.add_edge(u, v)
     return out
 
 
@@ -72,7 +72,7 @@ def _common_error(edge: dict[str, object]) -> bool:
     return bool(edge["common"]) and edge["kind"] == "error"
 
 
-def _warn_loops(ctx: CheckContext, mf: MachineFile, g: nx.DiGraph) -> None:
+def _warn_loops(ctx: CheckContext, mf: MachineFile, g: digraph.DiGraph) -> None:
     for component in _cyclic_components(g):
         names = [n for n in mf.model.states if ("state", n) in component]
         message = (

@@ -5,11 +5,13 @@ from __future__ import annotations
 import json
 import sys
 from collections.abc import Iterable
-from typing import Any, TextIO
+from typing import TYPE_CHECKING, Any, TextIO
 
 from hfsm.errors import Finding
-from hfsm.runtime.agent import AgentResult, BehaviourStats
-from hfsm.runtime.run import RunResult
+
+if TYPE_CHECKING:  # `--check` prints findings without loading the interpreter
+    from hfsm.runtime.agent import AgentResult, BehaviourStats
+    from hfsm.runtime.run import RunResult
 
 
 def findings(items: Iterable[Finding], out: TextIO | None = None) -> None:

@@ -9,6 +9,7 @@ import sys
 from collections.abc import Sequence
 from importlib.metadata import entry_points
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from hfsm.cli import report
 from hfsm.cli.fail import check_failures, fail_arg
@@ -19,11 +20,10 @@ from hfsm.load import Loaded, load
 from hfsm.monitor import live
 from hfsm.names import is_name
 from hfsm.registry import Registry
-from hfsm.runtime.program import Program
-from hfsm.runtime.run import RunOptions, run
-from hfsm.schema import schema_text
-from hfsm.trace import JsonlTrace
 from hfsm.world import WORLDS_GROUP, NullWorld, World, WorldFactory
+
+if TYPE_CHECKING:
+    from hfsm.trace import JsonlTrace
 
 
 def _factories() -> dict[str, WorldFactory]:
@@ -91,6 +91,8 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
     if args.schema:
+        from hfsm.schema import schema_text
+
         sys.stdout.write(schema_text())
         return 0
     if args.file is None:
@@ -146,6 +148,9 @@ def _agents(args: argparse.Namespace, world: World) -> list[str]:
 def _run(
     args: argparse.Namespace, loaded: Loaded, registry: Registry, world: World, params: dict[str, object]
 ) -> int:
+    from hfsm.runtime.program import Program  # not needed to check: loaded only to run
+    from hfsm.runtime.run import RunOptions, run
+
     top = loaded.roots[0]
     agents = _agents(args, world)
     check_failures(args.fail, agents)
@@ -178,6 +183,8 @@ def _run(
 
 
 def _open_trace(path: Path) -> JsonlTrace:
+    from hfsm.trace import JsonlTrace
+
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
         return JsonlTrace(path)

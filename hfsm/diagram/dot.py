@@ -116,13 +116,13 @@ def _cluster(c: Cluster, link_ext: str, indent: str) -> Iterator[str]:
 
 def _node(n: Node, link_ext: str) -> dict[str, str]:
     attrs = dict(ROLE[n.role])
-    attrs["label"] = _node_label(n)
+    attrs["label"] = _node_label(n, link_ext)
     attrs.update(_links(n.link, n.tooltip, link_ext))
     attrs.update(_emphasis(n.emphasis, attrs.get("style", "")))
     return attrs
 
 
-def _node_label(n: Node) -> str:
+def _node_label(n: Node, link_ext: str) -> str:
     if n.role in ("timer", "point"):
         return ""
     if n.role == "any":
@@ -132,7 +132,7 @@ def _node_label(n: Node) -> str:
     if n.role in ("success", "failure", "start") and not n.lines and not n.stats:
         return n.title
     if n.role == "parallel":
-        return _parallel(n)
+        return _parallel(n, link_ext)
     if n.role == "barrier":
         return _barrier(n)
     return _label(n.title, n.lines, n.stats)
@@ -145,21 +145,22 @@ def _barrier(n: Node) -> str:
     return Html(f'<table border="0" cellspacing="0" cellpadding="2">{bar}{body}</table>')
 
 
-def _parallel(n: Node) -> str:
+def _parallel(n: Node, link_ext: str) -> str:
     """One box: the state's name (and timer) over its lanes, divided by dashed lines."""
     head = f'<tr><td colspan="{len(n.lanes)}">{_label(n.title, n.lines, n.stats)}</td></tr>'
-    cells = "".join(_lane(lane, first=i == 0) for i, lane in enumerate(n.lanes))
+    cells = "".join(_lane(lane, i == 0, link_ext) for i, lane in enumerate(n.lanes))
     return Html(
         f'<table border="0" cellborder="0" cellspacing="0" cellpadding="4">{head}<tr>{cells}</tr></table>'
     )
 
 
-def _lane(lane: Lane, first: bool) -> str:
+def _lane(lane: Lane, first: bool, link_ext: str) -> str:
     sides = "T" if first else "TL"
+    href = f' href="{_h(lane.link)}.{link_ext}"' if lane.link else ""
     label = _label(lane.title, lane.lines, lane.stats)
     if lane.emphasis == "faded":
         label = f'<font color="{FADED}">{label}</font>'
-    return f'<td border="1" style="dashed" sides="{sides}">{label}</td>'
+    return f'<td border="1" style="dashed" sides="{sides}"{href}>{label}</td>'
 
 
 def _label(title: str, lines: Sequence[str], stats: Sequence[str]) -> str:

@@ -53,6 +53,7 @@ class Lane:
     lines: tuple[str, ...]
     background: bool = False
     ref: Ref | None = None
+    link: str = ""  # the figure of the region's machine
     stats: tuple[str, ...] = ()
     emphasis: Emphasis = "normal"
 

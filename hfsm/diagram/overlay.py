@@ -90,8 +90,8 @@ def _event(
     stats: Stats, r: Mapping[str, Any], path: list[str], views: list[Key], machines: Mapping[str, Machine]
 ) -> None:
     event, target = str(r.get("event", "")), str(r.get("target"))
-    innermost = views[-1] if views else None  # the machine whose state took the arc
-    owner = machines.get(innermost[0]) if innermost and len(innermost[1]) == 1 else None
+    holder = next((m for m, rel in reversed(views) if len(rel) == 1), "")  # whose state took the arc
+    owner = machines.get(holder)
     into_outcome = owner is not None and target in owner.all_outcomes
     for m, rel in views:
         if rel:

@@ -25,7 +25,10 @@ def _call(region: Region) -> tuple[str, ...]:
 
 
 def lanes(b: Builder, st: ParallelState, ref: Ref) -> tuple[Lane, ...]:
-    return tuple(Lane(name, _call(r), r.background, (*ref, name)) for name, r in st.parallel.items())
+    return tuple(
+        Lane(name, _call(r), r.background, (*ref, name), r.do if r.do in b.links else "")
+        for name, r in st.parallel.items()
+    )
 
 
 def inline(b: Builder, st: ParallelState, ref: Ref, depth: int) -> Part:

@@ -58,6 +58,7 @@ def fail(engine: Engine, agent: Agent, reason: str) -> None:
         return
     agent.failed = reason
     agent.mailbox.clear()
+    engine.world.fail(agent.name)  # first: the clean-up that follows finds its body stopped
     path = next(leaves(agent.root)).path() if agent.root is not None else [agent.top]
     engine.emit(agent, path, "failed", reason=reason)
     if agent.result is not None:

@@ -13,7 +13,15 @@ from hfsm.diagram.model import Edge, Figure, Node
 
 from .helpers_diagram import GOLDEN, data_sources
 
-CASES = [("lift", 0), ("move_table", 0), ("move_table", 1), ("relay", 0), ("relay", 2), ("search", 0), ("search", 2)]
+CASES = [
+    ("lift", 0),
+    ("move_table", 0),
+    ("move_table", 1),
+    ("relay", 0),
+    ("relay", 2),
+    ("search", 0),
+    ("search", 2),
+]
 
 
 def _golden(name: str, dot: str) -> None:

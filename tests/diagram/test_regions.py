@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from helpers import execute
+
 from hfsm.diagram.dot import to_dot
 from hfsm.diagram.extract import BORDER, WATCH_NODE, Sources, machine_figure
 from hfsm.diagram.model import Cluster, Edge, Figure, Node, walk
@@ -12,7 +14,7 @@ from hfsm.graph import WATCH, arcs, call_graph, state_graph
 from hfsm.model import Machine
 from hfsm.spec import BehaviourSpec
 
-from .helpers_diagram import data_sources
+from .helpers_diagram import DATA, data_sources
 
 
 def _item(fig: Figure, item_id: str) -> Node | Cluster:
@@ -139,3 +141,25 @@ def test_a_run_through_regions_is_counted_where_it_went() -> None:
     assert inner.count == 1
     lift = apply(machine_figure("lift", src), "lift", stats)  # the callee's figure counts it too
     assert _item(lift, "signal").stats == ("\u00d71, 0 s",)
+
+
+def test_a_run_of_the_engine_through_regions_is_drawn_over_every_depth() -> None:
+    src = data_sources()
+    _, records = execute(DATA / "search.yaml", agents=("a", "b"))
+    stats = collect(records, src.machines)
+    flat = apply(machine_figure("search", src), "search", stats)
+    node = _item(flat, "search")
+    assert isinstance(node, Node) and node.stats[0].startswith("\u00d72, ")
+    assert [lane.stats[0].split(",")[0] for lane in node.lanes] == ["\u00d72"] * 3
+    assert next(e for e in flat.edges if "move=at_wall" in e.events).count == 2
+    assert _item(flat, "done").stats == ("\u00d72", "end: a, b")
+    deep = apply(machine_figure("search", src, depth=2), "search", stats)
+    assert _item(deep, "search/move/lift/hold").stats[0].startswith("\u00d74, ")  # two agents, two lifts
+    assert next(e for e in deep.edges if e.source == "search/move/check" and "else" in e.labels).count == 2
+
+
+def test_each_lane_links_to_its_machines_figure() -> None:
+    fig = machine_figure("search", data_sources(), links={"move_table", "search"})
+    node = _item(fig, "search")
+    assert isinstance(node, Node) and [lane.link for lane in node.lanes] == ["move_table", "", ""]
+    assert 'sides="T" href="move_table.svg"' in to_dot(fig)

@@ -1,0 +1,42 @@
+"""The inputs the sim world declares (SPEC 12): what machines read as `in.NAME`.
+
+Declarations only, so that `hfsm-run --check` knows them without starting the simulator; the
+values come from `behaviours.senses`, from what a robot senses.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+from hfsm.world import InputSpec
+
+SIM_INPUTS: Mapping[str, InputSpec] = {
+    spec.name: spec
+    for spec in (
+        InputSpec("table_in_view", "bool", "the blue table is in the forward camera's image"),
+        InputSpec(
+            "table_bearing",
+            "float",
+            "degrees, left positive, body frame (head turn included): the direction of the table "
+            "blob's centre in the forward image; null when the table is not in view",
+        ),
+        InputSpec(
+            "table_distance",
+            "float",
+            "metres on the floor to the table blob's lowest pixel (its nearest foot); null when the "
+            "table is not in view or its lowest pixel is above the horizon",
+        ),
+        InputSpec("partner_in_view", "bool", "another robot's colour is in the forward camera's image"),
+        InputSpec("hand_give_left", "float", "metres: how far the load pulls the left hand off its posture"),
+        InputSpec(
+            "hand_give_right", "float", "metres: how far the load pulls the right hand off its posture"
+        ),
+        InputSpec("holding", "bool", "the hands carry a load"),
+        InputSpec(
+            "pose",
+            "dict",
+            "odometry in the robot's own start frame: {x: metres, y: metres, yaw: degrees, left positive}",
+        ),
+        InputSpec("battery", "float", "the battery's charge, 0 (empty: the robot fails) to 1 (full)"),
+    )
+}

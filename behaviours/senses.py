@@ -1,0 +1,76 @@
+"""The sim world's inputs computed from what one robot senses: its cameras, joints, odometry, battery.
+
+Computed only when a machine reads them; one forward image a tick at most, shared by the inputs
+that look at it. Nothing here reads the simulator's ground truth.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from sim import Robot
+from sim.perception import Blob, blob_ground, find_robots, find_table, pixel_bearing
+
+
+def _degrees(radians: float) -> float:
+    return round(math.degrees(radians), 6)
+
+
+class Senses:
+    """One robot's inputs at one tick (a new tick starts afresh)."""
+
+    def __init__(self, robot: Robot, own_colour: int) -> None:
+        self.robot = robot
+        self.own_colour = own_colour  # the index of its own body colour: it never sees itself
+        self._tick = -1
+        self._image: np.ndarray | None = None
+        self._table: Blob | None = None
+        self.readers: dict[str, Callable[[], Any]] = {
+            "table_in_view": lambda: self.table().found,
+            "table_bearing": self.table_bearing,
+            "table_distance": self.table_distance,
+            "partner_in_view": self.partner_in_view,
+            "hand_give_left": lambda: float(np.linalg.norm(self.robot.hand_load().left)),
+            "hand_give_right": lambda: float(np.linalg.norm(self.robot.hand_load().right)),
+            "holding": self.robot.holding,
+            "pose": self.pose,
+            "battery": self.robot.battery,
+        }
+
+    def read(self, name: str, tick: int) -> Any:
+        if tick != self._tick:
+            self._tick, self._image, self._table = tick, None, None
+        return self.readers[name]()
+
+    def image(self) -> np.ndarray:
+        if self._image is None:
+            self._image = self.robot.image("forward")
+        return self._image
+
+    def table(self) -> Blob:
+        if self._table is None:
+            self._table = find_table(self.image())
+        return self._table
+
+    def table_bearing(self) -> float | None:
+        blob = self.table()
+        if not blob.found:
+            return None
+        camera = self.robot.camera_model("forward")
+        return _degrees(pixel_bearing(camera, blob.centroid[0], blob.centroid[1]))
+
+    def table_distance(self) -> float | None:
+        ground = blob_ground(self.table(), self.robot.camera_model("forward"))
+        return round(ground.distance, 6) if ground.found else None
+
+    def partner_in_view(self) -> bool:
+        blobs = find_robots(self.image())
+        return any(b.found for i, b in enumerate(blobs) if i != self.own_colour)
+
+    def pose(self) -> dict[str, float]:
+        x, y, yaw = self.robot.odometry()
+        return {"x": round(x, 6), "y": round(y, 6), "yaw": _degrees(yaw)}

@@ -1,0 +1,139 @@
+"""The behaviour-test file (`*.test.yaml`) as a pydantic model: shape only; meaning is checked in check.py."""
+
+from __future__ import annotations
+
+from typing import Annotated, Any
+
+from pydantic import ConfigDict, Discriminator, Field, StringConstraints, Tag
+
+from hfsm.model import Name, Strict
+
+Seconds = Annotated[float, Field(ge=0, allow_inf_nan=False)]
+StatePath = Annotated[str, StringConstraints(pattern=r"^[a-z][a-z0-9_]*(/[a-z][a-z0-9_]*)*$")]
+
+
+class Step(Strict):
+    """One call of a stand-in: it takes `after` seconds, then ends with `outcome` and `outputs`."""
+
+    after: Seconds = Field(default=0, description="seconds the call takes (0: ends in the tick it began)")
+    outcome: Name | None = Field(default=None, description="absent: the call never ends by itself")
+    outputs: dict[Name, Any] = Field(default_factory=dict)
+    doc: str | None = None
+
+
+Script = Step | Annotated[list[Step], Field(min_length=1)]
+
+
+class ByAgent(Strict):
+    by_agent: dict[Name, Script] = Field(min_length=1, description="agent -> its own script")
+
+
+def _stand_in_kind(value: Any) -> str:
+    if isinstance(value, dict | ByAgent):
+        return "by-agent" if (isinstance(value, ByAgent) or "by_agent" in value) else "step"
+    return "steps" if isinstance(value, list) else "step"
+
+
+StandIn = Annotated[
+    Annotated[Step, Tag("step")]
+    | Annotated[list[Step], Tag("steps"), Field(min_length=1)]
+    | Annotated[ByAgent, Tag("by-agent")],
+    Discriminator(_stand_in_kind),
+]
+
+
+class InputsAt(Strict):
+    """Input values (`in.NAME`) that hold from time `at` on, for one agent or for all."""
+
+    at: Seconds = 0
+    agent: Name | None = Field(default=None, description="absent: every agent")
+    in_: dict[Name, Any] = Field(alias="in", min_length=1, description="input name -> value")
+
+
+class MessageIn(Strict):
+    """A message that enters the mailboxes at time `at`, as if sent by agent `from` (SPEC 6)."""
+
+    at: Seconds = 0
+    from_: Name = Field(alias="from", description="the sender: any name, in the run or not")
+    message: Name
+    to: Name | None = Field(default=None, description="absent: every agent of the test but the sender")
+    data: dict[str, Any] = Field(default_factory=dict)
+
+
+class TimeRange(Strict):
+    min: Seconds | None = None
+    max: Seconds | None = None
+
+
+Time = Seconds | TimeRange
+
+
+class Sent(Strict):
+    message: Name
+    to: Name | None = None
+    data: dict[str, Any] | None = Field(default=None, description="these fields, with these values")
+    at: Time | None = None
+
+
+SentItem = Name | Sent
+
+
+class InOrderStates(Strict):
+    in_order: list[StatePath] = Field(min_length=1, description="entered in this order, others between")
+
+
+class InOrderSends(Strict):
+    in_order: list[SentItem] = Field(min_length=1, description="sent in this order, others between")
+
+
+class AgentExpect(Strict):
+    outcome: Name | None = Field(default=None, description="null: the agent did not end")
+    time: Time | None = Field(default=None, description="when its top machine ended (s)")
+    outputs: dict[str, Any] | None = Field(default=None, description="these outputs, with these values")
+    states: list[StatePath] | InOrderStates | None = Field(
+        default=None, description="a list: exactly these, at their depths; in_order: a subsequence"
+    )
+    never: list[StatePath] | None = Field(default=None, description="states never entered")
+    sends: list[SentItem] | InOrderSends | None = Field(
+        default=None, description="a list: exactly these messages; in_order: a subsequence"
+    )
+    calls: dict[Name, Annotated[int, Field(ge=0)]] | None = Field(
+        default=None, description="behaviour -> how many times it was called"
+    )
+
+
+class Expect(AgentExpect):
+    """What every agent must do; `agents:` adds to it for each named agent."""
+
+    error: str | None = Field(default=None, description="the run ends in an error containing this text")
+    agents: dict[Name, AgentExpect] = Field(default_factory=dict)
+
+
+class Setup(Strict):
+    """What a case runs: given in the file for every case, or in a case, which then wins key by key."""
+
+    machine: str | None = Field(default=None, description="a machine's name, or a path to its file")
+    lib: list[str] | None = Field(default=None, description="more machine folders, from this file's")
+    agents: list[Name] | None = Field(default=None, min_length=1, description="default: [robot]")
+    params: dict[Name, Any] | None = None
+    seed: int | None = None
+    dt: Annotated[float, Field(gt=0, allow_inf_nan=False)] | None = None
+    max_time: Annotated[float, Field(gt=0, allow_inf_nan=False)] | None = None
+    stand_ins: dict[Name, StandIn] | None = Field(default=None, description="behaviour -> its script")
+    inputs: list[InputsAt] | None = None
+    messages: list[MessageIn] | None = None
+
+
+class Case(Setup):
+    doc: str | None = None
+    expect: Expect
+
+
+class TestFile(Setup):
+    """A behaviour-test file: a machine under test and its cases."""
+
+    model_config = ConfigDict(title="hfsm behaviour test")
+    __test__ = False  # not a pytest class
+
+    doc: str | None = None
+    tests: dict[Name, Case] = Field(min_length=1)

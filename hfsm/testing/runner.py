@@ -1,0 +1,40 @@
+"""Run one checked case in process, world-free, and compare the run with what it expects."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from hfsm.runtime.run import RunOptions, RunResult, run
+from hfsm.testing.expect import Comparison, Failure
+from hfsm.testing.plan import CasePlan
+from hfsm.testing.standins import program_for
+from hfsm.testing.world import ScriptedWorld
+from hfsm.trace import ListTrace
+
+
+@dataclass
+class CaseResult:
+    plan: CasePlan
+    failures: list[Failure]
+    result: RunResult
+    trace: list[dict[str, Any]]
+
+    @property
+    def passed(self) -> bool:
+        return not self.failures
+
+
+def run_case(plan: CasePlan) -> CaseResult:
+    program, calls = program_for(plan)
+    inputs = [entry for entry, _ in plan.inputs]
+    messages = [message for message, _ in plan.messages]
+    world = ScriptedWorld(inputs, messages, plan.agents, plan.dt)
+    trace = ListTrace()
+    options = RunOptions(plan.top, plan.agents, plan.params, plan.seed, plan.max_time)
+    try:
+        result = run(program, world, options, trace)
+    finally:
+        world.close()
+    failures = Comparison(plan, result, trace.records, calls).run()
+    return CaseResult(plan, failures, result, trace.records)
