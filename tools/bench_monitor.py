@@ -45,8 +45,9 @@ def main(argv: list[str] | None = None) -> int:
             traces[monitor] = (folder / "opposite_long_side-seed3.jsonl").read_bytes()
     ratios = [w / o for w, o in zip(walls[True], walls[False], strict=True)]
     lines = [
-        f"Command: `.venv/bin/python tools/bench_monitor.py --runs {args.runs}` (machines/move_furniture.yaml,",
-        "seed 3, no video; runs with and without `--monitor` alternated; medians).",
+        f"Command: `.venv/bin/python tools/bench_monitor.py --runs {args.runs}`",
+        "(machines/move_furniture.yaml, seed 3, no video; runs with and without `--monitor` alternated;",
+        "medians).",
         "",
         "| | wall time of the trial |",
         "|---|---|",
