@@ -197,7 +197,7 @@ def _run(
     options = RunOptions(loaded.roots[0].name, agents, params, args.seed, args.max_time, args.fail)
     program = Program(loaded.machines, registry, args.dt)
     trace = TraceFile(trace_path) if trace_path else None
-    sink, monitor = live.sinks(args, trace, loaded, registry, loaded.roots[0].name)
+    sink, monitor = live.sinks(args, trace, loaded, registry, loaded.roots[0].name, world)
     stop = guard.StopFlag()
     try:
         with guard.signals_flag(stop):

@@ -125,9 +125,13 @@ class LiveMonitor:
 
 
 def sinks(args: argparse.Namespace, trace: TraceSink | None, loaded: Loaded, registry: Registry,
-          title: str) -> tuple[TraceSink | None, LiveMonitor | None]:
-    """The run's trace sink with the monitor and the pacer added as asked; and the monitor."""
+          title: str, world: object) -> tuple[TraceSink | None, LiveMonitor | None]:
+    """The run's trace sink with the monitor, the pacer and the world's own reader (a video's
+    labels) added as asked; and the monitor."""
     extra: list[TraceSink] = []
+    label_sink = getattr(world, "label_sink", None)
+    if label_sink is not None and trace is not None:
+        extra.append(label_sink())
     monitor = None
     if args.monitor is not None:
         monitor = LiveMonitor(loaded, registry, title, args.monitor)

@@ -48,6 +48,10 @@ def test_replay_shows_the_active_states_messages_and_mailbox_at_a_chosen_time(pa
     assert "ball from a" in page.inner_text('.agent[data-agent="b"] .mailbox')
     assert page.locator("#sequence line.msg.received").count() == 1
     assert page.locator("#sequence line.msg.lost").count() == 0
+    top = '.agent[data-agent="b"] details.block[data-key="ping_pong"]'
+    assert "ping_pong's timer 29.95 s left" in page.inner_text(f"{top} > .facts")
+    page.evaluate("window.hfsm.seek(0.1)")
+    assert page.inner_text(f"{top} > table.vars") == 'hits\t1\nlast_sender\t"a"'
 
 
 def test_scrub_and_step_move_through_time(page: Any, ping_pong: Server) -> None:

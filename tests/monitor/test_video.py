@@ -28,5 +28,8 @@ def test_the_h264_video_of_a_sim_run_plays_in_chromium(page: Any, tmp_path: Path
         page.wait_for_function("document.getElementById('video').readyState >= 1", timeout=20000)
         assert page.evaluate("document.getElementById('video').duration") == pytest.approx(0.9)  # 9 frames, 10 fps
         assert page.evaluate("document.getElementById('video').videoWidth") == 480
+        page.evaluate("window.hfsm.seek(2)")  # the room from above, drawn from the trace's poses
+        assert page.inner_text("#room-note") == ""
+        assert page.locator(".agent").count() == 2
     finally:
         server.stop()

@@ -47,11 +47,15 @@ class Replay {
     const a = this.agent(r.agent);
     const key = r.path.join("/");
     switch (r.kind) {
-      case "enter":
+      case "enter": {
+        const previous = a.active.get(key);
         a.active.set(key, { path: r.path, key, t: r.t, do: r.do || (r.path.length === 1 ? r.path[0] : ""),
-                            deadline: r.deadline, attempt: 1, vars: r.vars || null });
+                            deadline: r.deadline, attempt: 1, vars: previous ? previous.vars : null,
+                            machineDeadline: previous ? previous.machineDeadline : undefined });
         if (r.path.length === 1) { a.result = null; a.failed = null; }
+        this.frameFacts(a, r);
         break;
+      }
       case "exit":
         for (const k of [...a.active.keys()]) if (k === key || k.startsWith(key + "/")) a.active.delete(k);
         if (r.path.length === 1) a.result = r.outcome === undefined ? null : r.outcome;
@@ -59,10 +63,7 @@ class Replay {
       case "event": {
         const entry = a.active.get(key);
         if (r.event === "retry" && entry) entry.attempt = r.attempt || entry.attempt + 1;
-        if (r.vars) {
-          const frame = a.active.get(r.path.slice(0, -1).join("/"));
-          if (frame) frame.vars = Object.assign({}, frame.vars || {}, r.vars);
-        }
+        this.frameFacts(a, r);
         const i = a.mailbox.findIndex(m => m.message === r.event);
         if (i >= 0 && r.message_arc !== false && this.isMessage(r.event)) a.mailbox.splice(i, 1);
         break;
@@ -84,6 +85,16 @@ class Replay {
       default:
         break;
     }
+  }
+
+  // A record of a machine's state may tell the machine's vars (on change) and its timer: both
+  // belong to the entry that runs the machine, one level up.
+  frameFacts(a, r) {
+    if (r.vars === undefined && r.machine_deadline === undefined) return;
+    const frame = a.active.get(r.path.slice(0, -1).join("/"));
+    if (!frame) return;
+    if (r.vars !== undefined) frame.vars = r.vars;
+    if (r.machine_deadline !== undefined) frame.machineDeadline = r.machine_deadline;
   }
 
   isMessage(name) { return this.messages.some(m => m.message === name); }
@@ -117,7 +128,7 @@ class Replay {
 
   agentNames() {
     const names = [];
-    for (const r of this.records) if (r.agent && !names.includes(r.agent)) names.push(r.agent);
+    for (const r of this.records) if (r.kind !== "pose" && r.agent && !names.includes(r.agent)) names.push(r.agent);
     return names;
   }
 }

@@ -91,6 +91,10 @@ function updateBlock(replay, machines, agentName, entry, node) {
     const timer = el("span", { class: "timer" }, ` · timer ${fmt(Math.max(0, entry.deadline - replay.time))} s left`);
     facts_.append(timer);
   }
+  if (entry.machineDeadline !== undefined) {
+    const left = fmt(Math.max(0, entry.machineDeadline - replay.time));
+    facts_.append(el("span", { class: "timer machine" }, ` · ${entry.do}'s timer ${left} s left`));
+  }
   if (entry.do === "barrier") facts_.append(el("span", { class: "barrier" }, " · waiting at a barrier"));
   const kids = replay.children(agentName, entry.path);
   const drawing = node.querySelector(":scope > .drawing");
