@@ -343,3 +343,30 @@ def test_committed_schema_is_current(capsys: pytest.CaptureFixture[str]) -> None
     assert (ROOT / "docs" / "test.schema.json").read_text() == out, (
         "run: hfsm-test --schema > docs/test.schema.json"
     )
+
+
+def test_agents_that_fail(ping: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    path = write(
+        ping.parent,
+        "fail.test.yaml",
+        """
+        machine: ping
+        agents: [a, b]
+        params: {tries: 1}
+        fail: [{agent: b, at: 0.5, reason: battery}]
+        tests:
+          b_goes_silent:
+            expect:
+              agents:
+                a: {outcome: gave_up, time: 1, failed: false}
+                b: {outcome: null, failed: true, time: 0.5}
+          nobody_fails:
+            fail: []
+            expect: {failed: true}
+        """,
+    )
+    code, out, _ = hfsm_test(capsys, path)
+    assert code == 1
+    assert "b_goes_silent" not in out
+    assert "fail.test.yaml:13:22: a: expected to fail; it did not" in out
+    assert "fail.test.yaml:13:22: b: expected to fail; it did not" in out
