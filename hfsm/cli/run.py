@@ -47,6 +47,7 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     p.add_argument("--check", action="store_true", help="validate and exit")
     p.add_argument("--strict", action="store_true", help="warnings are errors")
     p.add_argument("--schema", action="store_true", help="print the JSON Schema of machine files")
+    p.add_argument("--list", action="store_true", help="print every behaviour a run can call (Markdown)")
     p.add_argument("--traceback", action="store_true", help="show Python tracebacks of run-time errors")
     p.add_argument("--quiet", action="store_true", help="no summary table on stderr")
     p.add_argument(
@@ -93,8 +94,10 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
 
         sys.stdout.write(schema_text())
         return 0
+    if args.list:
+        return _list(args)
     if args.file is None:
-        raise UsageError("give a machine file (or --schema)")
+        raise UsageError("give a machine file (or --schema, or --list)")
     with stdout_to_stderr():
         registry = Registry.discover()
     if args.world is not None:
@@ -121,6 +124,17 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         files = guard.close_world(world)
         for path in files if started else ():
             print(f"wrote {path}", file=sys.stderr)
+
+
+def _list(args: argparse.Namespace) -> int:
+    from hfsm.cli.list import render
+
+    with stdout_to_stderr():
+        registry = Registry.discover()
+    if args.world is not None:
+        registry = registry.for_world(args.world)
+    sys.stdout.write(render(registry, args.lib))
+    return 0
 
 
 def _inputs(args: argparse.Namespace, loaded: Loaded) -> list[Path]:
