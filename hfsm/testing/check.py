@@ -68,7 +68,9 @@ class _FileChecker:
         before = len(self.findings)
         machine, machine_at = self._pick(case, "machine", at)
         if machine is None:
-            self.error(at, "T300", "no machine to test: give `machine:` here or at the top of the file")
+            self.error(
+                at, "T300", "no machine to test: give `machine:` here or at the top of the file", key=True
+            )
             return None
         libs, _ = self._pick(case, "lib", at)
         loaded = self._load(machine, machine_at, libs or [])
