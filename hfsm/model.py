@@ -40,6 +40,8 @@ def condition_text(value: Condition) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
     return repr(value)
+
+
 Path = tuple[str, ...]
 Count = Annotated[int, Field(gt=0)] | Expr
 Delay = Annotated[float, Field(ge=0, allow_inf_nan=False)] | Expr

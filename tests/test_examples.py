@@ -22,6 +22,10 @@ EXPECTED = {
     "timeouts": (["robot"], {"robot": ("failure", 4.5)}),
     "recover": (["robot"], {"robot": ("failure", 0.0)}),
     "meet": (["a", "b"], {"a": ("lifted", 3.05), "b": ("lifted", 3.05)}),
+    "parallel": (["robot"], {"robot": ("found", 1.5)}),
+    "watch": (["robot"], {"robot": ("done", 2.0)}),
+    "retry": (["robot"], {"robot": ("done", 4.0)}),
+    "reach_once": (["robot"], {"robot": ("missed", 1.0)}),
     "fail": (["a", "b", "c"], {"a": ("lifted", 2.55), "b": ("lifted", 2.55), "c": (None, 1.0)}),
 }
 FAILURES = {"fail": [Failure("c", 1.0)]}  # as its doc says: --fail c@1

@@ -121,7 +121,7 @@ def leaves(frame: Frame) -> Iterator[Frame | Region]:
     below = frame.below
     if below.__class__ is Frame:
         yield from leaves(below)
-    elif below.__class__ is list:
+    elif below.__class__ is list and any(r.result is None for r in below):
         for region in below:
             if region.result is None:
                 if region.below.__class__ is Frame:

@@ -1,5 +1,6 @@
 """Properties over random valid machines: the interpreter never crashes, every `enter` has its
-`exit` (last in, first out), and a machine timer always ends a loop."""
+`exit` (nested: a state exits after everything below it), a machine timer always ends a loop, and a
+join with `else` or full coverage never hangs."""
 
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 OUTCOMES = ["done", "failure"]
-KINDS = ["wait", "wait_forever", "set", "log", "send", "wait_for", "choice", "child"]
+KINDS = ["wait", "wait_forever", "set", "log", "send", "wait_for", "choice", "child", "parallel", "retry"]
 
 
 @st.composite
@@ -68,10 +69,55 @@ def _state(draw: st.DrawFn, kind: str, names: list[str], plain: list[str]) -> di
             "timer": 0.3,
             "on": {"received": target(), "timeout": target()},
         }
+    elif kind in ("parallel", "retry"):
+        return _v2_state(draw, kind, target)
     else:
         state = {"do": "child", "on": {"finished": target(), "timeout": target()}}
+    if draw(st.booleans()):
+        state["watch"] = [{"if": f"state.time >= {draw(st.sampled_from([0, 0.1, 0.5]))}", "then": target()}]
     if draw(st.booleans()) and kind not in ("wait_forever", "wait_for", "child"):
         state["on"]["error"] = target()
+    return state
+
+
+def _v2_state(draw: st.DrawFn, kind: str, target: Any) -> dict[str, Any]:
+    """A parallel state, or a call of the child machine with a retry (and maybe a watch)."""
+    if kind == "parallel":
+        return _parallel(draw, target, sorted(REGIONS))
+    state: dict[str, Any] = {
+        "do": "child",
+        "retry": {"on": draw(st.sampled_from([["finished"], ["timeout"], ["error"]])), "times": 2},
+        "on": {"finished": target(), "timeout": target()},
+    }
+    if draw(st.booleans()):
+        state["retry"]["delay"] = draw(st.sampled_from([0, 0.05, 0.2]))
+    if draw(st.booleans()):
+        state["watch"] = [{"if": f"state.time >= {draw(st.sampled_from([0.1, 0.5]))}", "then": target()}]
+    return state
+
+
+REGIONS: dict[str, tuple[dict[str, Any], list[str]]] = {
+    "wait": ({"do": "wait", "with": {"seconds": 0.1}}, ["done"]),
+    "now": ({"do": "set", "with": {"n": "${vars.n + 1}"}}, ["done"]),
+    "child": ({"do": "child"}, ["finished", "timeout"]),
+    "listen": ({"do": "wait_for", "with": {"message": "poke"}}, ["received"]),
+}
+
+
+def _parallel(draw: st.DrawFn, target: Any, pool: list[str]) -> dict[str, Any]:
+    """A parallel state whose join has `else`, or rules covering every combination of outcomes."""
+    kinds = draw(st.lists(st.sampled_from(pool), min_size=1, max_size=3))
+    regions = {f"r{i}": dict(REGIONS[k][0]) for i, k in enumerate(kinds)}
+    if draw(st.booleans()):
+        regions["bg"] = {"do": "wait", "background": True}
+    first = "r0"
+    join: list[dict[str, Any]] = [
+        {"when": {first: outcome}, "then": target()} for outcome in REGIONS[kinds[0]][1]
+    ]  # covers every combination: each outcome of the first region has a rule
+    if draw(st.booleans()):
+        join = [{"when": {first: REGIONS[kinds[0]][1][0]}, "then": target()}, {"else": target()}]
+    state: dict[str, Any] = {"parallel": regions, "join": join, "timer": draw(st.sampled_from([0.3, 1.0]))}
+    state["on"] = {"timeout": target()}
     return state
 
 
@@ -92,15 +138,19 @@ def _run(tmp_path: Path, machine: dict[str, Any], max_time: float) -> tuple[Any,
 
 
 def _check_nesting(records: list[dict[str, Any]]) -> None:
-    stacks: dict[str, list[list[str]]] = {}
+    """Every enter has its exit; a path enters inside an open one and exits after all below it."""
+    open_paths: dict[str, set[tuple[str, ...]]] = {}
     for record in records:
-        stack = stacks.setdefault(record["agent"], [])
+        opened = open_paths.setdefault(record["agent"], set())
+        path = tuple(record["path"])
         if record["kind"] == "enter":
-            stack.append(record["path"])
+            assert path not in opened and (len(path) == 1 or path[:-1] in opened), (opened, record)
+            opened.add(path)
         elif record["kind"] == "exit":
-            assert stack and stack[-1] == record["path"], (stack, record)
-            stack.pop()
-    assert all(not s for s in stacks.values()), stacks
+            assert path in opened, (opened, record)
+            assert not any(p[: len(path)] == path and p != path for p in opened), (opened, record)
+            opened.remove(path)
+    assert all(not s for s in open_paths.values()), open_paths
 
 
 @given(machines())
@@ -123,3 +173,20 @@ def test_a_machine_timer_always_ends_the_run(
         assert "state entries in one tick" in result.error or "division" in result.error, result.error
     else:
         assert all(r.outcome is not None and r.time <= timer + 1e-9 for r in result.agents.values())
+
+
+@st.composite
+def joins(draw: st.DrawFn) -> dict[str, Any]:
+    """A top machine with one parallel state of finite regions and a join that is checked complete."""
+    state = _parallel(draw, lambda: draw(st.sampled_from(OUTCOMES)), ["child", "now", "wait"])
+    state.pop("timer")
+    state.pop("on")
+    return {"vars": {"n": 0}, "outcomes": OUTCOMES, "receives": ["poke"], "states": {"p": state}}
+
+
+@given(joins())
+def test_a_complete_join_never_hangs(tmp_path_factory: Any, machine: dict[str, Any]) -> None:
+    result, records = _run(tmp_path_factory.mktemp("m"), machine, max_time=10)
+    assert result.error is None, result.error
+    assert all(r.outcome in OUTCOMES for r in result.agents.values())
+    _check_nesting(records)

@@ -15,13 +15,13 @@ Machine = Callable[[str, str], Path]
 
 NAVIGATE = """
     params:
-      waypoint: {type: str}
-      attempt: {type: int}
-      succeed_at: {type: int, default: 3}
+      waypoint: {{type: str}}
+      attempt: {{type: int}}
+      succeed_at: {{type: int, default: {succeed_at}}}
     outcomes: [arrived, unreachable]
-    outputs: {tried: "${params.attempt}"}
+    outputs: {{tried: "${{params.attempt}}"}}
     states:
-      drive: {do: wait, with: {seconds: 1.0}, on: {done: pick}}
+      drive: {{do: wait, with: {{seconds: 1.0}}, on: {{done: pick}}}}
       pick:
         choose:
           - if: "params.attempt >= params.succeed_at"
@@ -32,23 +32,21 @@ NAVIGATE = """
 SPEC_EXAMPLE = """
     params:
       target: {{type: str, default: dock}}
-    vars: {{tried: 0}}
     outcomes: [done, give_up]
-    outputs: {{tried: "${{vars.tried}}"}}
     states:
       navigate:
         do: navigate_to_waypoint
-        with: {{waypoint: "${{params.target}}", attempt: "${{state.attempt}}"{extra}}}
-        save: {{tried: tried}}
+        with: {{waypoint: "${{params.target}}", attempt: "${{state.attempt}}"}}
         retry: {{on: [unreachable, error], times: 3, delay: 1.5}}
-        timer: {timer}
+        timer: {timer}                                   # covers every attempt
         on: {{arrived: done, unreachable: give_up, timeout: give_up}}
 """
 
 
-def example(machine: Machine, extra: str = "", timer: float = 120) -> Path:
-    machine("navigate_to_waypoint", NAVIGATE)
-    return machine("top", SPEC_EXAMPLE.format(extra=extra, timer=timer))
+def example(machine: Machine, succeed_at: int = 3, timer: float = 120) -> Path:
+    """SPEC 13's example as written, around a stand-in that arrives on attempt `succeed_at`."""
+    machine("navigate_to_waypoint", NAVIGATE.format(succeed_at=succeed_at))
+    return machine("top", SPEC_EXAMPLE.format(timer=timer))
 
 
 def of_kind(records: list[dict[str, Any]], kind: str) -> list[dict[str, Any]]:
@@ -59,7 +57,9 @@ def test_spec_example_retries_after_the_delay_with_with_evaluated_anew(machine: 
     result, records = execute(example(machine))
     robot = result.agents["robot"]
     # attempts at 0, 2.5 and 5.0, each a second long; the third arrives
-    assert (robot.outcome, robot.outputs, robot.time) == ("done", {"tried": 3}, 6.0)
+    assert (robot.outcome, robot.time) == ("done", 6.0)
+    calls = [r for r in of_kind(records, "enter") if r["path"] == ["top", "navigate", "drive"]]
+    assert [r["t"] for r in calls] == [0.0, 2.5, 5.0]
     retries = [
         (r["t"], r["attempt"], r["outcome"]) for r in of_kind(records, "event") if r["event"] == "retry"
     ]
@@ -68,10 +68,36 @@ def test_spec_example_retries_after_the_delay_with_with_evaluated_anew(machine: 
 
 
 def test_after_the_last_retry_the_arc_is_taken(machine: Machine) -> None:
-    result, _ = execute(example(machine, extra=", succeed_at: 9"))
+    result, records = execute(example(machine, succeed_at=9))
     robot = result.agents["robot"]
     # four calls (the first and three retries), the last ending at 3 * (1 + 1.5) + 1 = 8.5
-    assert (robot.outcome, robot.outputs, robot.time) == ("give_up", {"tried": 4}, 8.5)
+    assert (robot.outcome, robot.time) == ("give_up", 8.5)
+    assert [r["attempt"] for r in of_kind(records, "event") if r["event"] == "retry"] == [2, 3, 4]
+
+
+def test_save_is_applied_at_every_end_so_with_reads_the_last(machine: Machine) -> None:
+    machine("navigate_to_waypoint", NAVIGATE.format(succeed_at=3))
+    path = machine(
+        "top",
+        """
+        vars: {tried: 0}
+        outcomes: [done, give_up]
+        outputs: {tried: "${vars.tried}"}
+        states:
+          nav:
+            do: navigate_to_waypoint
+            with: {waypoint: "after ${vars.tried}", attempt: "${vars.tried + 1}"}
+            save: {tried: tried}
+            retry: {on: [unreachable], times: 5}
+            on: {arrived: done, unreachable: give_up}
+    """,
+    )
+    result, _ = execute(path)
+    assert (result.agents["robot"].outcome, result.agents["robot"].outputs, result.time) == (
+        "done",
+        {"tried": 3},
+        3.0,
+    )
 
 
 def test_the_timer_covers_every_attempt_and_ends_a_delay(machine: Machine) -> None:
