@@ -20,6 +20,7 @@ from hfsm.runtime.program import span_ticks
 from hfsm.world import InputSpec
 from hfsm.yamlio import read_mapping
 from sim import Robot, Scenario, World, resolve
+from sim.recorder import Recorder
 
 SCORE_KEYS = ("success", "table_wall_distance", "dropped", "robot_collisions", "time")
 
@@ -46,8 +47,10 @@ class SimWorld:
         progress_every: float = 0.0,
         outputs: Sequence[Path] = (),
         default_trace: Path | None = None,
+        recorder: Recorder | None = None,
     ) -> None:
         self.world = world
+        self._recorder = recorder  # attached when the run starts: a run refused writes nothing
         self.default_trace = default_trace
         self.dt = 0.05
         self.progress_every = progress_every
@@ -55,11 +58,18 @@ class SimWorld:
         self._next_progress = progress_every
         self._senses: dict[str, Senses] = {}
 
+    @property
+    def outputs(self) -> list[Path]:
+        """The files the world writes when it closes (video, final picture)."""
+        return list(self._outputs)
+
     def agent_names(self) -> list[str]:
         return list(self.world.robots)
 
     def start(self, agents: Sequence[str], dt: float) -> None:
         self.dt = dt
+        if self._recorder is not None:
+            self.world.record(self._recorder)
 
     def handle(self, agent: str) -> Robot:
         return self.world.robots[agent]

@@ -27,6 +27,8 @@ class TrialSpec:
     dt: float = 0.05
     trace: str | None = None
     video: str | None = None
+    radio_latency: float = 0.1
+    radio_loss: float = 0.0
 
 
 @dataclass
@@ -53,7 +55,8 @@ def run_trial(spec: TrialSpec) -> TrialResult:
     params = machine_params(top, spec.params)
     scenario, _ = load_scenario(spec.scenario)
     with contextlib.ExitStack() as stack:
-        world = SimWorld(World(scenario, spec.seed, recorder=_recorder(spec.video)))
+        world = SimWorld(World(scenario, spec.seed, radio_latency=spec.radio_latency,
+                                radio_loss=spec.radio_loss, recorder=_recorder(spec.video)))
         stack.callback(world.close)
         trace = JsonlTrace(Path(spec.trace)) if spec.trace else None
         if trace:

@@ -12,6 +12,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from behaviours.inputs import SIM_INPUTS
+from hfsm.cli.guard import is_regular_or_new, make_folder, number
 from hfsm.errors import UsageError
 from hfsm.world import InputSpec
 
@@ -54,12 +55,15 @@ class SimWorldFactory:
             help="the video and final picture: a schematic from above (fast, default) or a lit 3-D view",
         )
         group.add_argument("--no-video", action="store_true", help="no video and no final picture")
-        group.add_argument("--image-size", default="160x120", metavar="WxH", help="camera images")
-        group.add_argument("--radio-latency", type=float, default=0.1, metavar="S")
-        group.add_argument("--radio-loss", type=float, default=0.0, metavar="P")
+        group.add_argument(
+            "--image-size", type=_image_size, default=(160, 120), metavar="WxH",
+            help="camera images, 16x12 to 1280x960 (default 160x120)",
+        )
+        group.add_argument("--radio-latency", type=LATENCY, default=0.1, metavar="S", help="0..3600 s")
+        group.add_argument("--radio-loss", type=LOSS, default=0.0, metavar="P", help="0..1")
         group.add_argument(
             "--progress",
-            type=float,
+            type=PROGRESS,
             default=60.0,
             metavar="S",
             help="print the simulated time every S seconds (0: never; default 60)",
@@ -71,37 +75,55 @@ class SimWorldFactory:
         from sim.recorder import Recorder
 
         scenario, name = load_scenario(args.scenario)
-        size = _image_size(args.image_size)
-        if not 0 <= args.radio_loss <= 1 or args.radio_latency < 0:
-            raise UsageError("--radio-loss takes 0..1 and --radio-latency a number >= 0")
-        stem = args.out / f"{name}-seed{seed}"
+        size = args.image_size
+        stem = args.out / default_stem(name, seed, args.radio_loss, args.radio_latency)
         video = None if args.no_video else args.video or stem.with_suffix(".mp4")
         recorder = None
         if video is not None:
-            writable_folder(video.parent, "--video")
-            recorder = Recorder(video, view=args.view)
+            if not is_regular_or_new(video):
+                message = f"--video {video}: not a regular file (a video cannot report a failed write)"
+                raise UsageError(message)
+            make_folder(video.parent, "--video")
+            try:
+                recorder = Recorder(video, view=args.view)
+            except ValueError as exc:
+                raise UsageError(f"--video: {exc}") from None
         world = World(
             scenario,
             seed,
             image_size=size,
             radio_latency=args.radio_latency,
             radio_loss=args.radio_loss,
-            recorder=recorder,
         )
         outputs = [video, video.with_suffix(".png")] if video else []
         trace = stem.with_suffix(".jsonl")
-        return SimWorld(world, progress_every=args.progress, outputs=outputs, default_trace=trace)
+        return SimWorld(
+            world, progress_every=args.progress, outputs=outputs, default_trace=trace, recorder=recorder
+        )
 
 
-def writable_folder(folder: Path, flag: str) -> None:
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise UsageError(f"{flag}: cannot write in {folder}: {exc.strerror or exc}") from None
+def default_stem(name: str, seed: int, loss: float, latency: float) -> str:
+    """SCENARIO-seedN, and the radio's settings when not the defaults: runs do not overwrite each other."""
+    stem = f"{name}-seed{seed}"
+    if loss:
+        stem += f"-loss{loss:g}"
+    if latency != DEFAULT_LATENCY:
+        stem += f"-latency{latency:g}"
+    return stem
+
+
+LATENCY = number(0.0, 3600.0)
+LOSS = number(0.0, 1.0)
+PROGRESS = number(0.0, 1e9)
+DEFAULT_LATENCY = 0.1
+MAX_IMAGE = (1280, 960)
 
 
 def _image_size(text: str) -> tuple[int, int]:
     width, sep, height = text.partition("x")
-    if not (sep and width.isdigit() and height.isdigit() and int(width) >= 16 and int(height) >= 12):
-        raise UsageError(f"--image-size {text!r}: write WIDTHxHEIGHT, e.g. 160x120")
-    return int(width), int(height)
+    if not (sep and width.isdigit() and height.isdigit()):
+        raise argparse.ArgumentTypeError(f"{text!r}: write WIDTHxHEIGHT, e.g. 160x120")
+    w, h = int(width), int(height)
+    if not (16 <= w <= MAX_IMAGE[0] and 12 <= h <= MAX_IMAGE[1]):
+        raise argparse.ArgumentTypeError(f"{text!r}: from 16x12 to {MAX_IMAGE[0]}x{MAX_IMAGE[1]}")
+    return w, h

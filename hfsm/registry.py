@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
-from importlib.metadata import entry_points
 
+from hfsm import plugins
 from hfsm.primitive import Primitive
 
 GROUP = "hfsm.primitives"
@@ -44,7 +44,34 @@ class Registry:
 
     @classmethod
     def discover(cls) -> Registry:
+        """The primitives of every plug-in; a broken plug-in or a name taken twice is named and left out."""
         registry = cls()
-        for ep in sorted(entry_points(group=GROUP), key=lambda e: e.name):
-            ep.load()(registry)
+        owners: dict[str, str] = {}
+        for ep, register in plugins.load_each(GROUP, _register_problem):
+            staging = cls()
+            ok, _ = plugins.run_hook(ep, register, staging)
+            if not ok:
+                continue
+            taken = [p.spec.name for p in staging if p.spec.name in registry]
+            if taken:
+                owner = owners[taken[0]]
+                plugins.warn(
+                    ep,
+                    f"registers '{taken[0]}', which plug-in '{owner}' registered first",
+                    "rename the primitive in one of them, or uninstall one",
+                )
+                continue
+            registry.add(*staging)
+            owners.update((p.spec.name, ep.name) for p in staging)
         return registry
+
+
+def _register_problem(ep: object, obj: object) -> str | None:
+    if isinstance(obj, Primitive):
+        return (
+            f"names the primitive '{obj.spec.name}', not a register function: point it at a function "
+            "`register(registry)` that calls `registry.add(...)`"
+        )
+    if not callable(obj):
+        return f"names {type(obj).__name__} {obj!r}, not a register function `register(registry)`"
+    return None

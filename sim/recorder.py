@@ -8,6 +8,7 @@ import math
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+import av
 import cv2
 import numpy as np
 
@@ -33,6 +34,7 @@ class Recorder:
         self.path = Path(path)
         self.every, self.size, self.cameras, self.fps, self.view = every, size, cameras, fps, view
         self._video = VideoWriter(self.path, fps)
+        self._failed: str | None = None
         self.last: np.ndarray | None = None
         self.frames = 0
 
@@ -98,10 +100,26 @@ class Recorder:
     def _write(self, frame: np.ndarray) -> None:
         self.last = frame
         self.frames += 1
-        self._video.write(frame)
+        if self._failed is None:
+            try:
+                self._video.write(frame)
+            except (OSError, av.FFmpegError) as exc:  # a full disk: the run goes on, `close` reports it
+                self._failed = f"{self.path} ({exc})"
 
     def close(self) -> None:
-        """Finish the video and write the last frame as <path>.png."""
-        self._video.close()
+        """Finish the video and write the last frame as <path>.png; OSError naming what failed."""
+        failed = [self._failed] if self._failed else []
+        try:
+            self._video.close()
+        except (OSError, av.FFmpegError) as exc:
+            failed.append(f"{self.path} ({exc})")
         if self.last is not None:
-            cv2.imwrite(str(self.path.with_suffix(".png")), self.last)
+            picture = self.path.with_suffix(".png")
+            try:
+                written = cv2.imwrite(str(picture), self.last) and picture.stat().st_size > 0
+            except (OSError, cv2.error):
+                written = False
+            if not written:
+                failed.append(str(picture))
+        if failed:
+            raise OSError(f"cannot write {' and '.join(failed)}")

@@ -68,6 +68,12 @@ class World:
             raise
         self._capture()
 
+    def record(self, recorder: Recorder) -> None:
+        """Start recording now, the first frame at once (instead of passing `recorder` to __init__)."""
+        self._recorder = recorder
+        self._next_capture = self.time
+        self._capture()
+
     @property
     def time(self) -> float:
         return self._steps / self.physics_hz
@@ -117,12 +123,14 @@ class World:
         return self._scorer.score(self.time, dropped=self.dropped)
 
     def close(self) -> None:
-        if self._recorder is not None:
-            self._recorder.close()
-            self._recorder = None
-        if self._cid is not None:
-            p.disconnect(physicsClientId=self._cid)
-            self._cid = None
+        recorder, self._recorder = self._recorder, None
+        try:
+            if recorder is not None:
+                recorder.close()  # OSError when the video or the picture could not be written
+        finally:
+            if self._cid is not None:
+                p.disconnect(physicsClientId=self._cid)
+                self._cid = None
 
     def __enter__(self) -> World:
         return self

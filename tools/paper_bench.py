@@ -40,6 +40,13 @@ def add_sweep_args(p: argparse.ArgumentParser) -> None:
     p.add_argument("--shard", type=Shard.parse, help="run only shard I of N (I/N) and write it to --shards")
     p.add_argument("--merge", action="store_true", help="write the report from the shards in --shards")
     p.add_argument("--shards", type=Path, default=ROOT / "out" / "shards", help="folder of shard files")
+    p.add_argument("--radio-loss", type=float, default=0.0, metavar="P", help="chance a message is lost")
+    p.add_argument("--radio-latency", type=float, default=0.1, metavar="S", help="seconds a message takes")
+
+
+def radio(args: argparse.Namespace) -> dict[str, float]:
+    """The TrialSpec fields of --radio-loss and --radio-latency."""
+    return {"radio_loss": args.radio_loss, "radio_latency": args.radio_latency}
 
 
 def campaign(specs: list[TrialSpec], args: argparse.Namespace, label: str) -> list[dict[str, Any]] | None:
@@ -61,7 +68,7 @@ def campaign(specs: list[TrialSpec], args: argparse.Namespace, label: str) -> li
 def specs_for(args: argparse.Namespace, params: dict[str, Any]) -> list[TrialSpec]:
     scenarios = [s for s, _ in SCENARIOS] if args.scenarios == "all" else args.scenarios.split(",")
     return [
-        TrialSpec(str(args.machine), scenario, seed, params, args.max_time)
+        TrialSpec(str(args.machine), scenario, seed, params, args.max_time, **radio(args))
         for scenario in scenarios
         for seed in range(args.seed, args.seed + args.trials)
     ]

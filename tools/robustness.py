@@ -26,7 +26,7 @@ sys.path.insert(0, str(ROOT))
 from behaviours.trial import TrialSpec  # noqa: E402
 from tools.docsection import write_section  # noqa: E402
 from tools.paper.results import succeeded  # noqa: E402
-from tools.paper_bench import add_sweep_args, campaign  # noqa: E402
+from tools.paper_bench import add_sweep_args, campaign, radio  # noqa: E402
 from tools.sweep import SweepError  # noqa: E402
 
 ROOM, LENGTH, WIDTH = 5.0, 0.8, 0.5
@@ -71,7 +71,8 @@ def main(argv: list[str] | None = None) -> int:
     for i in range(args.starts):
         path = args.out / f"start{i:03d}{'-table' if args.move_table else ''}.yaml"
         path.write_text(yaml.safe_dump(draw(rng, args.move_table, args.clearance), sort_keys=False))
-        specs.append(TrialSpec(str(ROOT / "machines" / "move_furniture.yaml"), str(path), args.seed + i))
+        specs.append(TrialSpec(str(ROOT / "machines" / "move_furniture.yaml"), str(path), args.seed + i,
+                               **radio(args)))
     label = "held-out-table" if args.move_table else "held-out"
     try:
         trials = campaign(specs, args, label)

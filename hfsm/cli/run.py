@@ -4,14 +4,12 @@ from __future__ import annotations
 
 import argparse
 import logging
-import math
 import sys
 from collections.abc import Sequence
-from importlib.metadata import entry_points
 from pathlib import Path
-from typing import TYPE_CHECKING
 
-from hfsm.cli import report
+from hfsm import plugins
+from hfsm.cli import guard, report
 from hfsm.cli.fail import check_failures, fail_arg
 from hfsm.cli.params import parse_params
 from hfsm.cli.quiet import stdout_to_stderr
@@ -21,24 +19,15 @@ from hfsm.names import is_name
 from hfsm.registry import Registry
 from hfsm.world import WORLDS_GROUP, NullWorld, World, WorldFactory
 
-if TYPE_CHECKING:
-    from hfsm.trace import JsonlTrace
-
 
 def _factories() -> dict[str, WorldFactory]:
     found: dict[str, WorldFactory] = {}
     with stdout_to_stderr():
-        for ep in sorted(entry_points(group=WORLDS_GROUP), key=lambda e: e.name):
-            factory = ep.load()()
-            found[factory.name] = factory
+        for ep, cls in plugins.load_each(WORLDS_GROUP, lambda ep, obj: None):
+            ok, factory = plugins.run_hook(ep, cls)
+            if ok:
+                found[factory.name] = factory
     return found
-
-
-def _positive(text: str) -> float:
-    value = float(text)
-    if not math.isfinite(value) or value <= 0:
-        raise argparse.ArgumentTypeError(f"must be a positive number of seconds, not {text}")
-    return value
 
 
 def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
@@ -50,9 +39,9 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     p.add_argument("--world", choices=["none", *factories], help="default: sim if a primitive needs it")
     p.add_argument("--agents", help="comma-separated agent names (default: the world's, else 'robot')")
     p.add_argument("--param", action="append", default=[], metavar="K=V", help="a param of the top machine")
-    p.add_argument("--seed", type=int, default=0)
-    p.add_argument("--dt", type=_positive, default=0.05, help="seconds per tick (default 0.05)")
-    p.add_argument("--max-time", type=_positive, default=3600.0, metavar="S", help="default 3600")
+    p.add_argument("--seed", type=guard.SEED, default=0)
+    p.add_argument("--dt", type=guard.DT, default=0.05, help="seconds per tick, 0.001..10 (default 0.05)")
+    p.add_argument("--max-time", type=guard.MAX_TIME, default=3600.0, metavar="S", help="default 3600")
     p.add_argument("--trace", type=Path, metavar="FILE.jsonl", help="write the trace, as the run goes")
     p.add_argument("--json", action="store_true", help="print one JSON object on stdout")
     p.add_argument("--check", action="store_true", help="validate and exit")
@@ -75,16 +64,27 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     factories = _factories()
-    args = build_parser(factories).parse_args(argv)
+    try:
+        args = build_parser(factories).parse_args(argv)
+    except SystemExit as exit_:  # a bad flag (2, usage printed) or --help (0): a code, for callers in process
+        return exit_.code if isinstance(exit_.code, int) else 2
     logging.basicConfig(level=logging.INFO, format="%(message)s", stream=sys.stderr)
     try:
-        return _main(args, factories)
+        with guard.signals_raise():
+            return _main(args, factories)
     except (UserError, UsageError) as err:
         if isinstance(err, UserError):
             report.findings(err.findings)
         else:
             print(f"hfsm-run: {err}", file=sys.stderr)
         return 2
+    except guard.OutputError as err:
+        print(f"hfsm-run: {err}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt as stop:
+        flag = guard.StopFlag(stop.args[0] if stop.args else None)
+        print(f"hfsm-run: stopped by {flag.name}", file=sys.stderr)
+        return flag.exit_code
 
 
 def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
@@ -107,12 +107,26 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
     top = loaded.roots[0]
     params = parse_params(args.param, top.model, top.name)
     world = _world(args, loaded, registry, factories)
+    started = False
     try:
-        return _run(args, loaded, registry, world, params)
+        agents = _agents(args, world)
+        check_failures(args.fail, agents)
+        trace_path = args.trace or world.default_trace
+        outputs = [("--trace", trace_path)] if trace_path else []
+        outputs += [("--video", Path(p)) for p in getattr(world, "outputs", ())]
+        guard.check_outputs(outputs, _inputs(args, loaded))
+        started = True
+        return _run(args, loaded, registry, world, params, agents, trace_path)
     finally:
-        files = world.close()
-        for path in files:
+        files = guard.close_world(world)
+        for path in files if started else ():
             print(f"wrote {path}", file=sys.stderr)
+
+
+def _inputs(args: argparse.Namespace, loaded: Loaded) -> list[Path]:
+    scenario = getattr(args, "scenario", None)
+    extra = [Path(scenario)] if isinstance(scenario, str) and Path(scenario).is_file() else []
+    return [mf.path for mf in loaded.machines.values()] + extra
 
 
 def _world(
@@ -144,23 +158,31 @@ def _agents(args: argparse.Namespace, world: World) -> list[str]:
 
 
 def _run(
-    args: argparse.Namespace, loaded: Loaded, registry: Registry, world: World, params: dict[str, object]
+    args: argparse.Namespace,
+    loaded: Loaded,
+    registry: Registry,
+    world: World,
+    params: dict[str, object],
+    agents: list[str],
+    trace_path: Path | None,
 ) -> int:
-    from hfsm.runtime.program import Program  # not needed to check: loaded only to run
+    from hfsm.cli.stop import stoppable  # not needed to check: loaded only to run
+    from hfsm.cli.tracefile import TraceFile
+    from hfsm.runtime.program import Program
     from hfsm.runtime.run import RunOptions, run
 
-    top = loaded.roots[0]
-    agents = _agents(args, world)
-    check_failures(args.fail, agents)
-    options = RunOptions(top.name, agents, params, args.seed, args.max_time, args.fail)
+    options = RunOptions(loaded.roots[0].name, agents, params, args.seed, args.max_time, args.fail)
     program = Program(loaded.machines, registry, args.dt)
-    trace_path = args.trace or world.default_trace
-    trace = _open_trace(trace_path) if trace_path else None
+    trace = TraceFile(trace_path) if trace_path else None
+    stop = guard.StopFlag()
     try:
-        result = run(program, world, options, trace)
+        with guard.signals_flag(stop):
+            result = run(program, stoppable(world, stop), options, trace)
     finally:
         if trace:
             trace.close()
+    if trace and trace.failed and not result.error:
+        result.error = trace.failed
     extra = world.report()
     if args.json:
         print(report.json_result(result, extra))
@@ -172,19 +194,9 @@ def _run(
         print(f"error: {result.error}", file=sys.stderr)
         if args.traceback and result.traceback:
             print(result.traceback, file=sys.stderr, end="")
-    if trace_path:
+    if trace and not trace.failed:
         print(f"wrote {trace_path}", file=sys.stderr)
-    return result.exit_code
-
-
-def _open_trace(path: Path) -> JsonlTrace:
-    from hfsm.trace import JsonlTrace
-
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        return JsonlTrace(path)
-    except OSError as exc:
-        raise UsageError(f"--trace: cannot write {path}: {exc.strerror or exc}") from None
+    return stop.exit_code if stop.signum else result.exit_code
 
 
 def entry() -> None:

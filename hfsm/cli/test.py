@@ -78,6 +78,7 @@ def _run(plans: list[CasePlan], *, verbose: bool) -> int:
         for failure in outcome.failures:
             print(f"  {failure.format()}")
     seconds = time.perf_counter() - start
+    sys.stdout.flush()
     files = len({p.file for p in plans})
     print(
         f"{len(plans) - failed} passed, {failed} failed "

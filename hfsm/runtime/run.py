@@ -92,14 +92,16 @@ def _next_tick(engine: Engine, failures: Failures) -> int | None:
     now = engine.tick
     if engine.team.waiting and engine.team.live():
         return now + 1
-    best = min(engine.world.next_delivery() or sys.maxsize, failures.next_tick() or sys.maxsize)
+    best = engine.world.next_delivery() or sys.maxsize
     for agent in engine.agents:
         if agent.result is not None or agent.root is None:
             continue
         best = _wake(agent.root, now, best)
         if best == now + 1:
             break
-    return None if best == sys.maxsize else best
+    if best == sys.maxsize:
+        return None  # a failure to come is no agent advancing: blocked forever now
+    return min(best, failures.next_tick() or sys.maxsize)
 
 
 def _wake(frame: Frame, now: int, best: int) -> int:

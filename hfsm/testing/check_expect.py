@@ -63,14 +63,17 @@ def _agent(
             problem = path_problem(models, top, set(stand_ins), path)
             if problem:
                 out.error((*at, *key.split("/"), i), "T322", problem)
-    for name in expect.calls or {}:
+    counted = [("calls", n) for n in expect.calls or {}] + [
+        ("called_with", n) for n in expect.called_with or {}
+    ]
+    for key, name in counted:
         if name not in stand_ins:
             known = ", ".join(sorted(stand_ins)) or "none here"
             hint = did_you_mean(name, stand_ins) or f" (stand-ins: {known})"
             out.error(
-                (*at, "calls", name),
+                (*at, key, name),
                 "T323",
-                f"calls are counted for stand-ins only: '{name}' is not one{hint}",
+                f"calls are recorded for stand-ins only: '{name}' is not one{hint}",
                 key=True,
             )
 

@@ -13,7 +13,7 @@ from hfsm.testing.plan import CasePlan
 from hfsm.testing.standins import Calls
 from hfsm.yamlio import Path_
 
-FIELDS = ("outcome", "time", "outputs", "states", "never", "sends", "calls")
+FIELDS = ("outcome", "time", "outputs", "states", "never", "sends", "calls", "called_with")
 SHOWN = 40  # longest list of states or messages shown in a failure
 
 
@@ -194,6 +194,23 @@ class Comparison:
             got = self.calls.count[(agent, name)]
             if got != count:
                 self.fail((*at, name), f"{agent}: expected {count} calls of '{name}', got {got}")
+
+    def _called_with(self, agent: str, expected: dict[str, list[dict[str, Any]]] | None, at: Path_) -> None:
+        for name, calls in (expected or {}).items():
+            got = self.calls.params.get((agent, name), [])
+            for i, params in enumerate(calls):
+                if i >= len(got):
+                    self.fail(
+                        (*at, name, i),
+                        f"{agent}: expected call {i + 1} of '{name}'; it was called {len(got)} times",
+                    )
+                    break
+                wrong = {k: v for k, v in params.items() if k not in got[i] or not same(v, got[i][k])}
+                if wrong:
+                    self.fail(
+                        (*at, name, i),
+                        f"{agent}: expected call {i + 1} of '{name}' with {show(params)}, got {show(got[i])}",
+                    )
 
 
 def _subsequence(expected: list[Any], got: list[Any], match: Any) -> int | None:

@@ -98,7 +98,10 @@ class AgentExpect(Strict):
         default=None, description="a list: exactly these messages; in_order: a subsequence"
     )
     calls: dict[Name, Annotated[int, Field(ge=0)]] | None = Field(
-        default=None, description="behaviour -> how many times it was called"
+        default=None, description="stand-in -> how many times it was called"
+    )
+    called_with: dict[Name, list[dict[Name, Any]]] | None = Field(
+        default=None, description="stand-in -> the params of its first calls, one mapping a call (these keys)"
     )
 
 

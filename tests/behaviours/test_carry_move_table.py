@@ -33,7 +33,7 @@ def test_synchronised_lift_agrees_the_travel_and_lifts_together(tmp_path: Path) 
             with: {role: "${'leader' if agent.id == 'r1' else 'assistant'}", direction: right,
                    steps: 4}
             save: {direction: direction, steps: steps}
-            on: {lifted: land, failure: failure, timeout: failure}
+            on: {lifted: land, at_wall: failure, failure: failure, timeout: failure}
           land: {do: land_table, on: {landed: done, failure: failure}}
     """)
     run = run_in_scene(top, at_table())

@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+import random
 from collections.abc import Callable
 from pathlib import Path
 
 import pytest
-from helpers import execute
+from helpers import execute, write
+from hypothesis import given
+from hypothesis import strategies as st
 
 from hfsm.primitive import Message
 from hfsm.runtime.failing import Failure
@@ -285,3 +288,51 @@ def test_a_barrier_cancelled_by_its_timer_leaves_the_team_and_counts_its_round(m
         "a": ("gave_up", 0.8, {"tries": 4}),
         "b": ("done", 0.55, {"tries": 0}),
     }
+
+
+@pytest.fixture(scope="module")
+def meet_file(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return write(tmp_path_factory.mktemp("barrier"), "meet", MEET.replace('agents: "${params.partners[agent.id]}", ', ""))
+
+
+@given(arrivals=st.lists(st.integers(min_value=0, max_value=30), min_size=1, max_size=5))
+def test_without_loss_everyone_passes_one_tick_after_the_last_arrives(meet_file: Path, arrivals: list[int]) -> None:
+    names = [f"a{i}" for i in range(len(arrivals))]
+    walk = {n: k * 0.05 for n, k in zip(names, arrivals, strict=True)}
+    result, records = execute(meet_file, agents=names, params={"walk": walk})
+    last = round((max(arrivals) + 1) * 0.05, 9)
+    assert result.error is None
+    assert ended(result) == {n: ("done", last, [m for m in names if m != n]) for n in names}
+    assert {r["kind"] for r in records} <= {"enter", "event", "exit"}
+
+
+class RandomLoss(NullWorld):
+    """Loses each notice or answer with probability `loss` (seeded); messages are never lost."""
+
+    static = False
+
+    def __init__(self, loss: float, seed: int) -> None:
+        super().__init__()
+        self.loss = loss
+        self.rng = random.Random(seed)
+
+    def post(self, message: Message) -> None:
+        if message.name == NOTICE and self.rng.random() < self.loss:
+            return
+        super().post(message)
+
+
+@given(
+    arrivals=st.lists(st.integers(min_value=0, max_value=20), min_size=2, max_size=4),
+    loss=st.floats(min_value=0.0, max_value=0.8),
+    seed=st.integers(0, 1000),
+)
+def test_with_loss_everyone_still_passes_and_never_early(
+    meet_file: Path, arrivals: list[int], loss: float, seed: int
+) -> None:
+    names = [f"a{i}" for i in range(len(arrivals))]
+    walk = {n: k * 0.05 for n, k in zip(names, arrivals, strict=True)}
+    result, _ = execute(meet_file, agents=names, params={"walk": walk}, world=RandomLoss(loss, seed), max_time=60)
+    assert result.error is None
+    first = round((max(arrivals) + 1) * 0.05, 9)
+    assert all(r.outcome == "done" and r.time >= first for r in result.agents.values())

@@ -94,7 +94,7 @@ def test_an_agent_failed_in_tick_0_never_starts(machine: Machine) -> None:
 
 
 def test_failures_fall_in_the_tick_their_span_ends(machine: Machine) -> None:
-    path = machine("m", "outcomes: [done]\nstates:\n  w: {do: wait, on: {done: done}}\n")
+    path = machine("m", "outcomes: [done]\nstates:\n  w: {do: wait, with: {seconds: 1}, on: {done: done}}\n")
     result, _ = execute(path, failures=[Failure("robot", 0.12)])
     assert (result.agents["robot"].time, result.error) == (0.15, "every agent failed")
 
@@ -128,3 +128,19 @@ def test_a_world_fails_an_agent(machine: Machine) -> None:
     assert (result.agents["b"].failed, result.agents["b"].time) == ("battery empty", 0.2)
     assert result.agents["a"].outcome == "done"
     assert [r["reason"] for r in records if r["kind"] == "failed"] == ["battery empty"]
+
+
+def test_blocked_forever_does_not_wait_for_a_failure_to_come(machine: Machine) -> None:
+    path = machine("m", "outcomes: [done]\nstates:\n  w: {do: wait, on: {done: done}}\n")
+    result, _ = execute(path, agents=["a", "b"], failures=[Failure("b", 5)])
+    assert (result.error, result.time) == ("blocked forever: a in m/w; b in m/w", 0.0)
+    assert result.agents["b"].failed is None
+
+
+def test_a_failure_between_two_timed_events_happens_in_its_tick(machine: Machine) -> None:
+    path = machine("m", "outcomes: [done]\nstates:\n  w: {do: wait, with: {seconds: 10}, on: {done: done}}\n")
+    result, _ = execute(path, agents=["a", "b"], failures=[Failure("b", 5)])
+    assert {n: (r.outcome, r.time, r.failed) for n, r in result.agents.items()} == {
+        "a": ("done", 10.0, None),
+        "b": (None, 5.0, "--fail"),
+    }

@@ -208,7 +208,9 @@ def test_stand_ins_play_one_step_a_call_and_the_last_repeats(
     assert "3 passed" in err
 
 
-def test_inputs_over_time_and_messages_to_each_agent(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_inputs_over_time_and_messages_to_each_agent(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     write(
         tmp_path,
         "door.yaml",
@@ -293,7 +295,7 @@ def test_bad_test_files_exit_2_with_every_problem_at_its_position(
         f"{file}:13:16: error[T322]: 'listen' calls 'wait_for', which has no states",
         f"{file}:13:26: error[T322]: 'ping' has no state 'lisen'; did you mean 'listen'?",
         f"{file}:14:16: error[T320]: no agent 'b' in this test (agents: a)",
-        f"{file}:15:15: error[T323]: calls are counted for stand-ins only: 'send' is not one "
+        f"{file}:15:15: error[T323]: calls are recorded for stand-ins only: 'send' is not one "
         "(stand-ins: scan_for_table)",
         f"{file}:17:14: error[T302]: no machine 'pingg' in {_shown(ping.parent)}, {_shown(ROOT / 'machines')}; "
         "did you mean 'ping'?",
