@@ -15,7 +15,14 @@ $(STAMP): pyproject.toml
 run: $(STAMP)
 	$(BIN)/hfsm-run machines/move_furniture.yaml
 
-test: $(STAMP)
+# The monitor's browser tests drive Debian's Chromium (no browser download); installed once, as root.
+CHROMIUM := $(VENV)/.chromium
+$(CHROMIUM): $(STAMP)
+	command -v chromium >/dev/null || { apt-get update -qq && \
+		DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends chromium; }
+	touch $(CHROMIUM)
+
+test: $(STAMP) $(CHROMIUM)
 	$(BIN)/python -m pytest
 
 lint: $(STAMP)

@@ -61,7 +61,7 @@ class Frame:
 
     __slots__ = (
         "_scope", "agent", "attempt", "below", "clock", "deadline", "entered", "machine", "params",
-        "retry_at", "started", "state", "state_deadline", "up", "vars",
+        "retry_at", "started", "state", "state_deadline", "up", "vars", "vars_shown",
     )  # fmt: skip
 
     def __init__(
@@ -70,6 +70,7 @@ class Frame:
         self.machine = machine
         self.params = params
         self.vars = machine.fresh_vars() if machine.var_init else {}
+        self.vars_shown = not self.vars  # False: the trace has not shown the vars as they are now
         self.agent = agent
         self.clock = clock
         self.up = up

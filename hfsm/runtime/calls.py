@@ -134,6 +134,7 @@ class Calls(Cancelling):
             for var, output in frame.state.save:
                 if output in event.outputs:
                     frame.vars[var] = event.outputs[output]
+                    frame.vars_shown = False
 
     def _count_of(self, times: Any, frame: Frame, what: str) -> int | Event:
         if times.__class__ is int:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -58,6 +58,7 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
     last = span_ticks(options.max_time, program.dt)
     top = program.machines[options.top]
     failures = Failures(engine, options.failures)
+    world_records = getattr(world, "trace_records", None)  # a world may add records (robots' poses)
     try:
         failures.apply(0)
         for agent in agents:
@@ -73,6 +74,7 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
                 return f"stopped at --max-time {options.max_time:g} s: " + _where(agents), ""
             if not world.static:
                 world.advance(engine.tick)
+                _world_records(engine, world_records, following)
             engine.tick = following
             failures.apply(following)
             engine.deliver(world.collect(following))
@@ -85,6 +87,15 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
     except FatalError as exc:
         return exc.args[0], exc.traceback
     return None, ""
+
+
+WorldRecords = Callable[[int], list[dict[str, Any]]]
+
+
+def _world_records(engine: Engine, records: WorldRecords | None, tick: int) -> None:
+    if records is not None and engine.trace is not None:
+        for record in records(tick):
+            engine.trace.write(record)
 
 
 def _next_tick(engine: Engine, failures: Failures) -> int | None:
