@@ -107,12 +107,21 @@ def _next_tick(engine: Engine, failures: Failures) -> int | None:
     for agent in engine.agents:
         if agent.result is not None or agent.root is None:
             continue
-        best = _wake(agent.root, now, best)
+        root = agent.root
+        below = root.below
+        if below.__class__ is Frame or below.__class__ is list or below is None or root.state.timed:
+            best = _wake(root, now, best)
+        else:  # one machine running one behaviour: the common case, without a call
+            for deadline in (root.deadline, root.state_deadline, root.retry_at, below.deadline):
+                if deadline is not None and now < deadline < best:
+                    best = deadline
         if best == now + 1:
             break
     if best == sys.maxsize:
         return None  # a failure to come is no agent advancing: blocked forever now
-    return min(best, failures.next_tick() or sys.maxsize)
+    if failures.due:
+        best = min(best, failures.next_tick() or sys.maxsize)
+    return best
 
 
 def _wake(frame: Frame, now: int, best: int) -> int:
