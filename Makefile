@@ -36,6 +36,7 @@ clean:
 figures: $(STAMP)
 	$(BIN)/hfsm-graph machines -o docs/figures --format svg,dot --prune
 	$(BIN)/hfsm-graph examples -o docs/figures/examples --format svg,dot --no-legend --prune
+	$(BIN)/hfsm-graph tests/diagram/data/search.yaml --depth 2 -o docs/figures/depth --format svg,dot --no-legend --no-overview --prune
 
 # Primitives' declarations, read without importing the simulator: see behaviours/registry.py.
 .PHONY: declarations

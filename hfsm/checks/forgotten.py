@@ -17,7 +17,9 @@ _ROOTS = ("vars.", "params.", "agent.", "state.", "machine.", "in.")
 
 def reads_like_expression(text: str) -> bool:
     """`vars.lap + 1`, `params.target`: parses as an expression and reads a name of SPEC 7."""
-    return "${" not in text and any(name.startswith(_ROOTS) for name in reads(text))
+    if "${" in text or "." not in text or not any(root in text for root in _ROOTS):
+        return False  # most strings: no need to parse them
+    return any(name.startswith(_ROOTS) for name in reads(text))
 
 
 def wrapped(text: str) -> str:

@@ -175,7 +175,9 @@ def test_regions_that_can_wait_forever_or_share_a_message(machine: Machine) -> N
         "above it has a timer; put a timer on 'both'",
         "top:7:7 W404 regions 'a' and 'b' both consume message 'go': 'a' takes it first and 'b' may never see it",
     ]
-    timed = machine("timed", body.format("watch:\n          - {if: 'machine.time > 60', then: done}\n        "))
+    timed = machine(
+        "timed", body.format("watch:\n          - {if: 'machine.time > 60', then: done}\n        ")
+    )
     assert [f.split()[1] for f in found(timed)] == ["W404"]
 
 
