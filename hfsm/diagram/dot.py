@@ -159,7 +159,7 @@ def _parallel(n: Node, link_ext: str) -> str:
 
 def _lane(lane: Lane, first: bool, link_ext: str) -> str:
     sides = "T" if first else "TL"
-    href = f' href="{_h(lane.link)}.{link_ext}"' if lane.link else ""
+    href = f' href="{_h(lane.link)}.{link_ext}" title="{_h(lane.link)}"' if lane.link else ""
     label = _label(lane.title, lane.lines, lane.stats)
     if lane.barrier:
         label = _barrier_table(label)
@@ -176,7 +176,8 @@ def _label(title: str, lines: Sequence[str], stats: Sequence[str]) -> str:
 
 
 def _links(link: str, tooltip: str, link_ext: str) -> dict[str, str]:
-    attrs = {"tooltip": tooltip} if tooltip else {}
+    """A link's tooltip is the state's doc, else the machine linked (never the label's HTML)."""
+    attrs = {"tooltip": tooltip or link} if tooltip or link else {}
     if link:
         attrs["href"] = f"{link}.{link_ext}"
     return attrs

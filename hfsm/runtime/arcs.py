@@ -77,7 +77,10 @@ class Arcs(Calls):
                         frame.vars_shown = False
         if self.trace is not None:
             shown = target.name if target.__class__ is RState else target
-            self.emit(frame.agent, frame.path(), "event", event=name, target=shown, **self._vars_of(frame))
+            extra = self._vars_of(frame)
+            if state.do == "barrier" and event.outputs:
+                extra["arrived"] = event.outputs.get("arrived")  # who the barrier heard (the monitor)
+            self.emit(frame.agent, frame.path(), "event", event=name, target=shown, **extra)
         self._leave(frame, name)
         return target
 

@@ -176,4 +176,4 @@ def test_each_lane_links_to_its_machines_figure() -> None:
     fig = machine_figure("search", data_sources(), links={"move_table", "search"})
     node = _item(fig, "search")
     assert isinstance(node, Node) and [lane.link for lane in node.lanes] == ["move_table", "", ""]
-    assert 'sides="T" href="move_table.svg"' in to_dot(fig)
+    assert 'sides="T" href="move_table.svg" title="move_table"' in to_dot(fig)
