@@ -9,6 +9,7 @@ from pydantic import BaseModel, Tag, ValidationError
 from pydantic_core import ErrorDetails
 
 from hfsm.errors import Finding, UserError
+from hfsm.expr import reads
 from hfsm.names import NAME_PATTERN, did_you_mean
 from hfsm.yamlio import Document, Path_
 
@@ -85,8 +86,10 @@ def _message(model: type[BaseModel], path: Path_, err: ErrorDetails) -> str:
         return f"unknown key {where}" + (hint or f" (allowed: {', '.join(allowed)})")
     if kind == "missing":
         return f"missing required key '{err['loc'][-1]}'"
-    if last == "timer":
-        return f"'timer' must be a number of seconds > 0 or a '${{…}}' expression, not {_describe(value)}"
+    if last in _COUNTS:
+        return f"'{last}' must be {_COUNTS[last]} or a '${{…}}' expression, not {_describe(value)}" + _wrap(
+            value
+        )
     if kind == "string_pattern_mismatch":
         return f"bad name {_describe(value)}: names match {NAME_PATTERN}"
     if kind in _TYPE_NAMES:
@@ -102,6 +105,19 @@ def _message(model: type[BaseModel], path: Path_, err: ErrorDetails) -> str:
         ]
         return f"{where}: {err['msg'].lower()}, not {_describe(value)}" + did_you_mean(str(value), expected)
     return f"{where}: {err['msg']}"
+
+
+_COUNTS = {
+    "timer": "a number of seconds > 0",
+    "times": "a whole number > 0",
+    "delay": "a number of seconds >= 0",
+}
+
+
+def _wrap(value: Any) -> str:
+    """The forgotten `${…}` (issue 13): say how to wrap text that reads as an expression."""
+    text = value.strip() if isinstance(value, str) else ""
+    return f"; write '${{{text}}}'" if "${" not in text and reads(text) else ""
 
 
 def _describe(value: Any) -> str:

@@ -110,3 +110,23 @@ def test_the_monitor_never_changes_the_trace(tmp_path: Path) -> None:
     assert run_main([*args, str(plain)]) == 0
     assert run_main([*args, str(watched), "--monitor", "--monitor-hold", "0"]) == 0
     assert plain.read_bytes() == watched.read_bytes()
+
+
+def test_a_barrier_shows_while_waiting_and_who_it_heard_once_passed(page: Any, tmp_path: Path) -> None:
+    meet = tmp_path / "meet.yaml"
+    meet.write_text(
+        "outcomes: [together, alone]\nstates:\n  walk:\n    do: wait\n"
+        "    with: {seconds: \"${0.2 if agent.id == 'a' else 1.0}\"}\n    on: {done: meet}\n"
+        "  meet:\n    do: barrier\n    with: {name: meet}\n    timer: 10\n    on: {passed: together, timeout: alone}\n")
+    trace = tmp_path / "meet.jsonl"
+    assert run_main([str(meet), "--agents", "a,b", "--trace", str(trace), "--quiet"]) == 0
+    server = Server(Hub(read_trace(trace)), drawings(meet, []), trace.name)
+    server.start()
+    try:
+        _open(page, server.url)
+        page.evaluate("window.hfsm.seek(0.5)")
+        assert "waiting at a barrier" in page.inner_text('.agent[data-agent="a"] details[data-key="meet/meet"]')
+        page.evaluate("window.hfsm.seek(2)")
+        assert "last barrier passed at 1.05 s (meet), with b" in page.inner_text('.agent[data-agent="a"] .mailbox')
+    finally:
+        server.stop()

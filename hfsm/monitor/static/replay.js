@@ -63,6 +63,7 @@ class Replay {
       case "event": {
         const entry = a.active.get(key);
         if (r.event === "retry" && entry) entry.attempt = r.attempt || entry.attempt + 1;
+        if (r.arrived !== undefined) a.lastBarrier = { path: key, arrived: r.arrived, t: r.t };
         this.frameFacts(a, r);
         const i = a.mailbox.findIndex(m => m.message === r.event);
         if (i >= 0 && r.message_arc !== false && this.isMessage(r.event)) a.mailbox.splice(i, 1);

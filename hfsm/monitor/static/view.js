@@ -42,6 +42,11 @@ function drawAgent(replay, machines, name, column) {
   const box = column.querySelector(".mailbox");
   box.textContent = a.mailbox.length
     ? "mailbox: " + a.mailbox.map(m => `${m.message} from ${m.sender}`).join(", ") : "mailbox: empty";
+  if (a.lastBarrier) {
+    const b = a.lastBarrier;
+    box.append(el("div", { class: "barrier-passed" },
+                  `last barrier passed at ${fmt(b.t)} s (${b.path.split("/").pop()}), with ${b.arrived.join(", ") || "nobody"}`));
+  }
 }
 
 // Keep the children of `parent` in step with `keys`: new ones made, old ones removed, kept ones updated.
