@@ -90,8 +90,7 @@ class Arcs(Calls):
         frame.entered = self.tick
         frame.state_deadline = None
         frame.attempt = 1
-        timed = state.timer is not None and not state.is_choice
-        bad_timer = self._start_timer(frame, state) if timed else None
+        bad_timer = None if state.timer is None else self._start_timer(frame, state)
         if self.trace is not None:
             self.emit(agent, frame.path(), "enter", **self._entered(frame, state))
         agent.entries += 1
@@ -106,6 +105,8 @@ class Arcs(Calls):
             message = agent.take_message(state.msg_arcs)
             if message is not None:
                 return Event(message.name, message=message)
+        if state.plain:
+            return self._start_call(frame, state, frame)
         if state.watches:
             event = self._watch(frame, state)
             if event is not None:
