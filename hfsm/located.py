@@ -90,6 +90,9 @@ def _message(model: type[BaseModel], path: Path_, err: ErrorDetails) -> str:
         return f"'{last}' must be {_COUNTS[last]} or a '${{…}}' expression, not {_describe(value)}" + _wrap(
             value
         )
+    if kind == "too_short":
+        least = (err.get("ctx") or {}).get("min_length", 1)
+        return f"{where} must have at least {least} {'entry' if least == 1 else 'entries'}, not none"
     if kind == "string_pattern_mismatch":
         return f"bad name {_describe(value)}: names match {NAME_PATTERN}"
     if kind in _TYPE_NAMES:
@@ -139,7 +142,7 @@ def _allowed_keys(model: type[BaseModel], loc: tuple[int | str, ...]) -> list[st
     current: Any = model
     for part in loc:
         current = _step(current, part)
-    current = _strip(current)
+    current = _only_model(_strip(current)) or _strip(current)
     if isinstance(current, type) and issubclass(current, BaseModel):
         return sorted(f.alias or n for n, f in current.model_fields.items())
     return []
@@ -166,4 +169,16 @@ def _step(annotation: Any, part: int | str) -> Any:
             tags = [m for m in getattr(arg, "__metadata__", ()) if isinstance(m, Tag)]
             if tags and tags[0].tag == part:
                 return arg
+        model = _only_model(annotation)
+        if model is not None:  # `retry: Retry | None`: the keys are the model's
+            return _step(model, part)
     return annotation
+
+
+def _only_model(annotation: Any) -> type[BaseModel] | None:
+    if get_origin(annotation) not in (Union, types.UnionType):
+        return None
+    models = [
+        a for a in map(_strip, get_args(annotation)) if isinstance(a, type) and issubclass(a, BaseModel)
+    ]
+    return models[0] if len(models) == 1 else None

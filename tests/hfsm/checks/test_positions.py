@@ -116,3 +116,34 @@ def test_check_knows_the_world_and_a_retry_count_is_positive(
     code, lines = check(capsys, str(path), "--check", "--world", "none")
     message = "the run's world declares no input 'in.battery' (it declares: none)"
     assert (code, lines) == (2, [f"{path}:5:18: error[E330]: {message}"])
+
+
+def test_schema_errors_of_rules_and_retries_name_the_right_keys(
+    machine: Machine, capsys: pytest.CaptureFixture[str]
+) -> None:
+    path = machine(
+        "s",
+        """
+        outcomes: [done]
+        states:
+          p:
+            parallel:
+              r: {do: wait}
+            join:
+              - when: {r: done}
+                then: done
+                else: done
+              - {when: {}, then: done}
+          q:
+            do: wait
+            retry: {on: [done], times: 1, tries: 2}
+            on: {done: done}
+        """,
+    )
+    code, lines = check(capsys, str(path), "--check")
+    assert code == 2
+    assert lines == [
+        f"{path}:9:9: error[E200]: unknown key 'else' (allowed: doc, then, when)",
+        f"{path}:10:16: error[E200]: 'when' must have at least 1 entry, not none",
+        f"{path}:13:35: error[E200]: unknown key 'tries'; did you mean 'times'?",
+    ]

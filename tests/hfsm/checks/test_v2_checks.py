@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from pathlib import Path
 
+from hfsm.checks.forgotten import reads_like_expression
 from hfsm.errors import UserError
 from hfsm.load import load
 from hfsm.registry import Registry
@@ -205,3 +206,9 @@ def test_a_forgotten_wrap(machine: Machine) -> None:
         "f:8:47 W405 'vars.lap' reads like an expression but is taken as text; write '${vars.lap}'",
         "f:8:61 W405 'agent.id' reads like an expression but is taken as text; write '${agent.id}'",
     ]
+
+
+def test_prose_is_not_taken_for_a_forgotten_wrap() -> None:
+    assert reads_like_expression("vars.lap + 1") and reads_like_expression("in.battery < 0.2")
+    for text in ("vars.n is big", "found vars.n corners", "lap ${vars.lap}", "go", "3.5"):
+        assert not reads_like_expression(text), text
