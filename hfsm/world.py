@@ -108,6 +108,8 @@ class PerfectRadio:
 
     def next_delivery(self) -> int | None:
         """The next tick a message enters a mailbox (barrier notices never do)."""
+        if not self._in_flight:
+            return None
         ticks = [m.sent_tick for m in self._in_flight if m.name != NOTICE]
         return min(ticks) + 1 if ticks else None
 
