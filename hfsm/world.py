@@ -64,8 +64,7 @@ class World(Protocol):
     def failures(self, tick: int) -> Sequence[tuple[str, str]]:
         """The agents this world fails at the start of `tick`, each with the reason (SPEC 15).
 
-        A static world is asked only in the ticks the run does not skip: one that fails agents
-        on its own must not be static.
+        A static world is never asked: one that fails agents on its own must not be static.
         """
 
     def fail(self, agent: str) -> None:

@@ -76,7 +76,8 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
                 world.advance(engine.tick)
                 _world_records(engine, world_records, following)
             engine.tick = following
-            failures.apply(following)
+            if failures.due or not world.static:
+                failures.apply(following)
             engine.deliver(world.collect(following))
             for agent in agents:
                 if agent.result is None:
@@ -120,7 +121,7 @@ def _next_tick(engine: Engine, failures: Failures) -> int | None:
     if best == sys.maxsize:
         return None  # a failure to come is no agent advancing: blocked forever now
     if failures.due:
-        best = min(best, failures.next_tick() or sys.maxsize)
+        best = min(best, failures.due[0][0])
     return best
 
 
