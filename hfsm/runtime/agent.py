@@ -60,8 +60,8 @@ class Frame:
     """One running machine: its memory, its current state, its timers, and what runs below it."""
 
     __slots__ = (
-        "_scope", "agent", "attempt", "below", "deadline", "entered", "machine", "params", "retry_at",
-        "started", "state", "state_deadline", "up", "vars", "vars_shown",
+        "_prefix", "_scope", "agent", "attempt", "below", "deadline", "entered", "machine", "params",
+        "retry_at", "started", "state", "state_deadline", "up", "vars", "vars_shown",
     )  # fmt: skip
     entered: int  # the tick its current state was entered (set on entering it, as the two below)
     state_deadline: int | None
@@ -77,6 +77,7 @@ class Frame:
         self.agent = agent
         self.up = up
         self._scope: Scope | None = None
+        self._prefix: tuple[str, ...] | None = None
         self.state: RState = machine.initial  # type: ignore[assignment]
         self.deadline: int | None = None  # the machine timer's tick
         self.retry_at: int | None = None  # the tick a retry's delay ends in
@@ -93,12 +94,17 @@ class Frame:
 
     def prefix(self) -> list[str]:
         """The path of the state or region that runs this machine."""
-        up = self.up
-        return [self.agent.top] if up is None else up.path()
+        return list(self._prefix or self._own_prefix())
 
     def path(self) -> list[str]:
         """The path of this machine's current state."""
-        return [*self.prefix(), self.state.name]
+        return [*(self._prefix or self._own_prefix()), self.state.name]
+
+    def _own_prefix(self) -> tuple[str, ...]:
+        """Made once: what runs a machine stays where it is while the machine runs (trace records)."""
+        up = self.up
+        self._prefix = (self.agent.top,) if up is None else tuple(up.path())
+        return self._prefix
 
 
 class Region:
