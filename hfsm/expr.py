@@ -14,6 +14,7 @@ from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass
 from typing import Any, Protocol
 
+from hfsm import bounds
 from hfsm.names import did_you_mean
 
 
@@ -156,9 +157,27 @@ def _arith(op: type, fn: Callable[[Any, Any], Any]) -> Callable[[Any, Any], Any]
         joinable = op is ast.Add and type(a) is type(b) and isinstance(a, str | list)
         if not (both_numbers or joinable):
             raise ExprValueError(f"cannot apply '{_SYMBOLS.get(op, '%')}' to {_kind(a)} and {_kind(b)}")
-        return fn(a, b)
+        return _bounded(op, fn, a, b)
 
     return apply
+
+
+def _bounded(op: type, fn: Callable[[Any, Any], Any], a: Any, b: Any) -> Any:
+    """Apply `fn`; refuse a result past the limits of hfsm.bounds, a big product before it is made."""
+    try:
+        if op is ast.Mult and a.__class__ is int and b.__class__ is int:
+            bounds.product_fits(a, b)
+        elif op is ast.Add and not _number(a):
+            bounds.joined_fits(a, b)
+            return bounds.check_value(fn(a, b))
+        result = fn(a, b)
+        if result.__class__ is float:
+            return bounds.check_float(result)
+        return bounds.check_int(result)
+    except bounds.LimitError as exc:
+        raise ExprValueError(str(exc)) from None
+    except OverflowError:
+        raise ExprValueError("the result is too large for a number") from None
 
 
 def _kind(value: Any) -> str:
@@ -203,6 +222,10 @@ class _Compiler:
         value = node.value
         if not isinstance(value, int | float | str | bool | type(None)):
             raise ExprSyntaxError(f"literal {value!r} is not allowed")
+        try:
+            bounds.check_scalar(value)
+        except bounds.LimitError as exc:
+            raise ExprSyntaxError(f"literal {_snippet(node)[:40]}: {exc}") from None
         return lambda s: value
 
     def c_Name(self, node: ast.Name) -> Fn:
@@ -312,13 +335,13 @@ class _Compiler:
 
     def c_List(self, node: ast.List) -> Fn:
         items = [self.compile(e) for e in node.elts]
-        return lambda s: [i(s) for i in items]
+        return lambda s: bounded([i(s) for i in items])
 
     def c_Dict(self, node: ast.Dict) -> Fn:
         if any(k is None for k in node.keys):
             raise ExprSyntaxError("'**' is not allowed in an expression")
         pairs = [(self.compile(k), self.compile(v)) for k, v in zip(node.keys, node.values, strict=True) if k]
-        return lambda s: {k(s): v(s) for k, v in pairs}
+        return lambda s: bounded({k(s): v(s) for k, v in pairs})
 
     def c_Call(self, node: ast.Call) -> Fn:
         if not isinstance(node.func, ast.Name) or node.func.id not in _FUNCS:
@@ -335,6 +358,14 @@ class _Compiler:
                 raise ExprValueError(f"{node.func.id}(): {exc}") from None  # type: ignore[attr-defined]
 
         return call
+
+
+def bounded(value: Any) -> Any:
+    """A built list, dict or string, checked against the limits of hfsm.bounds."""
+    try:
+        return bounds.check_value(value)
+    except bounds.LimitError as exc:
+        raise ExprValueError(str(exc)) from None
 
 
 def _all(parts: list[Fn], s: Scope) -> Any:

@@ -2,13 +2,16 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
 from hfsm.checks import enforce, run_checks
 from hfsm.errors import Finding
 from hfsm.library import Library, MachineFile
+from hfsm.model import state_calls
 from hfsm.registry import Registry
+from hfsm.world import NO_INPUTS, InputSpec
 from hfsm.yamlio import collector_paused
 
 
@@ -29,22 +32,53 @@ def load(
     libs: list[Path] | None = None,
     registry: Registry | None = None,
     strict: bool = False,
+    world: str | None = None,
+    world_inputs: Mapping[str, Mapping[str, InputSpec]] | None = None,
 ) -> Loaded:
     """Read the files and all they call, run every check; raise UserError on any error.
 
-    The garbage collector is paused meanwhile: loading builds many objects and frees few, and the
-    collector's passes over them made a large machine's load grow faster than its size.
+    `world_inputs` (each world's declared inputs, by world name) lets the checks refuse an `in.x`
+    that the run's world (`world`, else the one the machines need) does not declare; without it,
+    inputs are not checked. The garbage collector is paused meanwhile: loading builds many objects
+    and frees few, and the collector's passes over them made a large machine's load grow faster than
+    its size.
     """
     with collector_paused():
-        return _load(paths, libs or [], registry, strict)
+        return _load(paths, libs or [], registry, strict, world, world_inputs)
 
 
-def _load(paths: list[Path], libs: list[Path], registry: Registry | None, strict: bool) -> Loaded:
+def world_of(machines: Mapping[str, MachineFile], registry: Registry, asked: str | None = None) -> str:
+    """The run's world: the one asked for, else the first one a called primitive needs, else none."""
+    if asked is not None:
+        return asked
+    return next(iter(worlds_needed(machines, registry)), "none")
+
+
+def worlds_needed(machines: Mapping[str, MachineFile], registry: Registry) -> list[str]:
+    """The worlds of the primitives the machines call (a parallel state calls its regions')."""
+    called = {
+        do for mf in machines.values() for n, s in mf.model.states.items() for _, do in state_calls(n, s)
+    }
+    return sorted({p.spec.world for p in registry if p.spec.world and p.spec.name in called})
+
+
+def _load(
+    paths: list[Path],
+    libs: list[Path],
+    registry: Registry | None,
+    strict: bool,
+    world: str | None,
+    world_inputs: Mapping[str, Mapping[str, InputSpec]] | None,
+) -> Loaded:
     registry = registry if registry is not None else Registry()
     library = Library.for_file(paths[0], libs, registry)
     for extra in paths[1:]:
         if extra.resolve().parent not in library.search:
             library.search.insert(1, extra.resolve().parent)
     roots = library.load(paths)
-    warnings = enforce(library.findings + run_checks(library.machines, registry), strict=strict)
+    inputs = None
+    if world_inputs is not None:
+        inputs = world_inputs.get(world_of(library.machines, registry, world), NO_INPUTS)
+    findings = run_checks(library.machines, registry, inputs)
+    warnings = enforce(library.findings + findings, strict=strict)
     return Loaded(library, roots, warnings)

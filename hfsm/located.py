@@ -58,12 +58,12 @@ def _data_path(data: Any, loc: tuple[int | str, ...]) -> tuple[Path_, bool]:
     for part in loc:
         if part == "[key]":
             return tuple(path), True
-        if _is_tag(part):
-            continue
         found, child = _child(data, part)
         if found:
             data = child
             path.append(part)
+        elif not _is_tag(part):
+            break  # pydantic names something the data lacks (a missing key): stop at its parent
     return tuple(path), False
 
 

@@ -6,7 +6,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-from hfsm.expr import ExprSyntaxError, Fn, Names, Scope, compile_expr, to_text
+from hfsm.expr import ExprSyntaxError, Fn, Names, Scope, bounded, compile_expr, to_text
 
 
 @dataclass(frozen=True)
@@ -64,7 +64,7 @@ def compile_text(text: str, names: Names) -> Value:
             pieces.append(_as_text(compile_expr(part[0], names)))
         else:
             pieces.append(_literal(part))
-    return Value(lambda s: "".join(p(s) for p in pieces), False)
+    return Value(lambda s: bounded("".join(p(s) for p in pieces)), False)
 
 
 def _as_text(fn: Fn) -> Callable[[Scope], str]:
@@ -89,10 +89,10 @@ def compile_value(value: Any, names: Names, errors: list[str] | None = None) -> 
         items = {k: compile_value(v, names, errors) for k, v in value.items()}
         if all(v.constant for v in items.values()):
             return Value(lambda s: value, True, value)
-        return Value(lambda s: {k: v.fn(s) for k, v in items.items()}, False)
+        return Value(lambda s: bounded({k: v.fn(s) for k, v in items.items()}), False)
     if isinstance(value, list):
         elems = [compile_value(v, names, errors) for v in value]
         if all(v.constant for v in elems):
             return Value(lambda s: value, True, value)
-        return Value(lambda s: [v.fn(s) for v in elems], False)
+        return Value(lambda s: bounded([v.fn(s) for v in elems]), False)
     return Value(lambda s: value, True, value)

@@ -6,12 +6,14 @@ with `--strict`. docs/CHECKS.md lists every code.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 
 from hfsm.checks.calls import check_calls
 from hfsm.checks.context import CheckContext
 from hfsm.checks.expressions import check_expressions, check_param_defaults
+from hfsm.checks.forgotten import check_forgotten_wraps
 from hfsm.checks.graphs import check_recursion, check_state_graph
+from hfsm.checks.parallel import check_parallel
 from hfsm.checks.structure import (
     check_any,
     check_choice_else,
@@ -20,9 +22,11 @@ from hfsm.checks.structure import (
     check_reserved_names,
     check_targets,
 )
+from hfsm.checks.waits import check_regions
 from hfsm.errors import Finding, Severity, UserError
 from hfsm.library import MachineFile
 from hfsm.registry import Registry
+from hfsm.world import InputSpec
 
 MachineCheck = Callable[[CheckContext, MachineFile], None]
 
@@ -35,13 +39,19 @@ MACHINE_CHECKS: tuple[MachineCheck, ...] = (
     check_any,
     check_param_defaults,
     check_calls,
+    check_parallel,
     check_expressions,
     check_state_graph,
+    check_regions,
+    check_forgotten_wraps,
 )
 
 
-def run_checks(machines: dict[str, MachineFile], registry: Registry) -> list[Finding]:
-    ctx = CheckContext(machines, registry)
+def run_checks(
+    machines: dict[str, MachineFile], registry: Registry, inputs: Mapping[str, InputSpec] | None = None
+) -> list[Finding]:
+    """Every check over the loaded machines; `inputs`: what the run's world declares (None: unknown)."""
+    ctx = CheckContext(machines, registry, inputs)
     for mf in machines.values():
         for check in MACHINE_CHECKS:
             check(ctx, mf)

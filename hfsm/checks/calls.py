@@ -2,9 +2,10 @@
 
 from __future__ import annotations
 
-from hfsm.checks.context import CheckContext, call_states
+from hfsm.checks.context import CheckContext, call_states, parallel_states
+from hfsm.checks.forgotten import reads_like_expression, wrapped
 from hfsm.library import MachineFile
-from hfsm.model import CallState
+from hfsm.model import CallState, Region
 from hfsm.names import RESERVED_MESSAGES, did_you_mean, is_name
 from hfsm.spec import BehaviourSpec, type_ok
 from hfsm.values import split
@@ -28,10 +29,18 @@ def check_calls(ctx: CheckContext, mf: MachineFile) -> None:
         _check_params(ctx, mf, where, state, spec)
         _check_events(ctx, mf, where, state, spec)
         _check_save(ctx, mf, where, state, spec)
+        _check_retry(ctx, mf, where, state, spec)
+    for name, parallel in parallel_states(mf.model):
+        for region_name, region in parallel.parallel.items():
+            spec = ctx.specs.get(region.do)
+            if spec is not None:
+                at: Where = ("states", name, "parallel", region_name)
+                _check_params(ctx, mf, at, region, spec)
+                _check_save(ctx, mf, at, region, spec)
 
 
 def _check_params(
-    ctx: CheckContext, mf: MachineFile, where: Where, state: CallState, spec: BehaviourSpec
+    ctx: CheckContext, mf: MachineFile, where: Where, state: CallState | Region, spec: BehaviourSpec
 ) -> None:
     given = state.with_
     if spec.open_params:
@@ -54,6 +63,8 @@ def _check_params(
             message = (
                 f"param '{key}' of '{spec.name}' takes {param.type}, not {type(value).__name__} {value!r}"
             )
+            if isinstance(value, str) and reads_like_expression(value):
+                message += f"; write '{wrapped(value)}' for an expression"
             ctx.error(mf, (*where, "with", key), "E306", message)
     for key, param in spec.params.items():
         if param.required and key not in given:
@@ -62,7 +73,7 @@ def _check_params(
 
 
 def _check_message_name(
-    ctx: CheckContext, mf: MachineFile, where: Where, state: CallState, spec: BehaviourSpec
+    ctx: CheckContext, mf: MachineFile, where: Where, state: CallState | Region, spec: BehaviourSpec
 ) -> None:
     message = state.with_.get("message")
     if spec.name not in ("send", "wait_for") or not isinstance(message, str) or _is_expr(message):
@@ -97,8 +108,9 @@ def _check_events(
                 f" nor a message in 'receives'{hint}"
             )
             ctx.error(mf, at, "E303", message, key=True)
+    retried = set(state.retry.on) if state.retry else set()
     for outcome in spec.outcomes:
-        if outcome not in state.on:
+        if outcome not in state.on and outcome not in retried:
             ctx.error(
                 mf, (*where, "do"), "E308", f"outcome '{outcome}' of '{spec.name}' is not mapped in 'on'"
             )
@@ -110,7 +122,7 @@ def _check_events(
 
 
 def _check_save(
-    ctx: CheckContext, mf: MachineFile, where: Where, state: CallState, spec: BehaviourSpec
+    ctx: CheckContext, mf: MachineFile, where: Where, state: CallState | Region, spec: BehaviourSpec
 ) -> None:
     for var, output in state.save.items():
         if var not in mf.model.vars:
@@ -120,3 +132,23 @@ def _check_save(
             declared = ", ".join(sorted(spec.outputs)) or "none"
             hint = did_you_mean(output, spec.outputs) or f" (outputs: {declared})"
             ctx.error(mf, (*where, "save", var), "E305", f"'{spec.name}' has no output '{output}'{hint}")
+
+
+def _check_retry(
+    ctx: CheckContext, mf: MachineFile, where: Where, state: CallState, spec: BehaviourSpec
+) -> None:
+    """Every outcome retried is one the callee has, and is still mapped for after the last retry."""
+    if state.retry is None:
+        return
+    for i, outcome in enumerate(state.retry.on):
+        at = (*where, "retry", "on", i)
+        if outcome == "error":
+            continue
+        if outcome not in spec.outcomes:
+            known = ", ".join(spec.outcomes)
+            hint = did_you_mean(outcome, [*spec.outcomes, "error"]) or f" (it has: {known}, and 'error')"
+            tail = "; a state's own timer is never retried" if outcome == "timeout" else ""
+            ctx.error(mf, at, "E327", f"'{spec.name}' has no outcome '{outcome}' to retry{hint}{tail}")
+        elif outcome not in state.on:
+            message = f"retried outcome '{outcome}' must still be mapped in 'on' (taken after the last retry)"
+            ctx.error(mf, at, "E328", message)

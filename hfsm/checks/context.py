@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
 
@@ -11,9 +11,10 @@ from hfsm.builtins import BUILTINS
 from hfsm.errors import Finding, Severity
 from hfsm.graph import call_graph
 from hfsm.library import MachineFile
-from hfsm.model import CallState, ChoiceState, Machine
+from hfsm.model import CallState, ChoiceState, Machine, ParallelState
 from hfsm.registry import Registry
 from hfsm.spec import BehaviourSpec, ParamSpec
+from hfsm.world import InputSpec
 from hfsm.yamlio import Path_
 
 
@@ -37,7 +38,9 @@ def machine_spec(machine: MachineFile) -> BehaviourSpec:
 class CheckContext:
     machines: dict[str, MachineFile]
     registry: Registry
+    inputs: Mapping[str, InputSpec] | None = None  # what the run's world declares; None: not known
     findings: list[Finding] = field(default_factory=list)
+    memo: dict[tuple[str, str], object] = field(default_factory=dict)  # what checks share, by (kind, name)
 
     @cached_property
     def specs(self) -> dict[str, BehaviourSpec]:
@@ -54,8 +57,8 @@ class CheckContext:
     def error(self, machine: MachineFile, path: Path_, code: str, message: str, *, key: bool = False) -> None:
         self.findings.append(machine.doc.finding(path, code, message, key=key))
 
-    def warn(self, machine: MachineFile, path: Path_, code: str, message: str) -> None:
-        f = machine.doc.finding(path, code, message)
+    def warn(self, machine: MachineFile, path: Path_, code: str, message: str, *, key: bool = False) -> None:
+        f = machine.doc.finding(path, code, message, key=key)
         self.findings.append(Finding(f.file, f.line, f.col, f.code, f.message, Severity.WARNING))
 
 
@@ -68,4 +71,10 @@ def call_states(m: Machine) -> Iterator[tuple[str, CallState]]:
 def choice_states(m: Machine) -> Iterator[tuple[str, ChoiceState]]:
     for name, state in m.states.items():
         if isinstance(state, ChoiceState):
+            yield name, state
+
+
+def parallel_states(m: Machine) -> Iterator[tuple[str, ParallelState]]:
+    for name, state in m.states.items():
+        if isinstance(state, ParallelState):
             yield name, state

@@ -1,48 +1,119 @@
-"""Every expression of a machine compiles, and reads only names that exist where it stands."""
+"""Every expression of a machine compiles, and reads only names that exist where it stands (SPEC 7, 12)."""
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from dataclasses import dataclass
 from typing import Any
 
-from hfsm.checks.context import CheckContext, call_states, choice_states
-from hfsm.expr import ExprSyntaxError, Names, compile_expr
+from hfsm.checks.context import CheckContext, call_states, choice_states, parallel_states
+from hfsm.expr import ExprSyntaxError, Names, compile_expr, reads
 from hfsm.library import MachineFile
-from hfsm.model import IfBranch
+from hfsm.model import IfBranch, Watch
+from hfsm.names import did_you_mean
 from hfsm.spec import type_ok
-from hfsm.values import compile_value
+from hfsm.values import split
 
 Where = tuple[str | int, ...]
 
 
-def _value(ctx: CheckContext, mf: MachineFile, where: Where, value: Any, names: Names) -> None:
-    errors: list[str] = []
-    compile_value(value, names, errors)
-    for message in errors:
-        ctx.error(mf, where, "E314", message)
+@dataclass(frozen=True)
+class Place:
+    """What an expression may read where it stands: `vars`, `state.*`, `machine.time`, `in.x`."""
+
+    what: str  # where it stands, for messages: "the machine's timer"
+    vars: bool = True
+    state: bool = True
+    machine_time: bool = True
+    inputs: bool = True
 
 
-def _timer(ctx: CheckContext, mf: MachineFile, where: Where, timer: float | str | None, names: Names) -> None:
-    if isinstance(timer, str):
-        _value(ctx, mf, where, timer, names)
+IN_STATE = Place("a state")
+OUTPUTS = Place("the machine's outputs", state=False)
+MACHINE_TIMER = Place("the machine's timer", vars=False, state=False, machine_time=False, inputs=False)
+RETRY = Place("a retry's 'times' or 'delay'", vars=False, state=False, machine_time=False, inputs=False)
+STATE_NAMES = "only in a state's with, timer and watch, the machine's watch, and a choice's if"
+
+
+def check_expression(ctx: CheckContext, mf: MachineFile, where: Where, source: str, place: Place) -> None:
+    """One bare expression: its syntax and names (E314), then what it reads live (E330, E331)."""
+    m = mf.model
+    try:
+        compile_expr(source, Names(m.params, m.vars if place.vars else None))
+    except ExprSyntaxError as exc:
+        ctx.error(mf, where, "E314", str(exc))
+        return
+    for name in sorted(reads(source)):
+        root, attr = name.split(".", 1)
+        if root == "state" and not place.state:
+            ctx.error(mf, where, "E331", f"'{name}' cannot be read in {place.what}; {STATE_NAMES}")
+        elif name == "machine.time" and not place.machine_time:
+            ctx.error(mf, where, "E331", f"'machine.time' cannot be read in {place.what}")
+        elif root == "in" and not place.inputs:
+            ctx.error(
+                mf, where, "E331", f"'in.{attr}' cannot be read in {place.what}; only params and agent.id"
+            )
+        elif root == "in" and ctx.inputs is not None and attr not in ctx.inputs:
+            declared = ", ".join(sorted(ctx.inputs)) or "none"
+            hint = did_you_mean(attr, ctx.inputs)
+            message = f"the run's world declares no input 'in.{attr}' (it declares: {declared}){hint}"
+            ctx.error(mf, where, "E330", message)
+
+
+def expressions_in(value: Any) -> Iterator[str]:
+    """The `${…}` expressions of a literal tree, at any depth, never in keys (SPEC 7)."""
+    if isinstance(value, str):
+        if "${" in value:
+            for part in split(value):
+                if isinstance(part, tuple):
+                    yield part[0]
+    elif isinstance(value, dict):
+        for item in value.values():
+            yield from expressions_in(item)
+    elif isinstance(value, list):
+        for item in value:
+            yield from expressions_in(item)
+
+
+def check_value(ctx: CheckContext, mf: MachineFile, where: Where, value: Any, place: Place) -> None:
+    try:
+        found = list(expressions_in(value))
+    except ExprSyntaxError as exc:
+        ctx.error(mf, where, "E314", str(exc))
+        return
+    for source in found:
+        check_expression(ctx, mf, where, source, place)
+
+
+def _watches(ctx: CheckContext, mf: MachineFile, where: Where, watches: list[Watch]) -> None:
+    for i, watch in enumerate(watches):
+        check_expression(ctx, mf, (*where, i, "if"), watch.condition, IN_STATE)
 
 
 def check_expressions(ctx: CheckContext, mf: MachineFile) -> None:
     m = mf.model
-    with_vars = Names(m.params, m.vars)
-    _timer(ctx, mf, ("timer",), m.timer, Names(m.params, None))
+    check_value(ctx, mf, ("timer",), m.timer, MACHINE_TIMER)
     for name, expr in m.outputs.items():
-        _value(ctx, mf, ("outputs", name), expr, with_vars)
+        check_value(ctx, mf, ("outputs", name), expr, OUTPUTS)
+    _watches(ctx, mf, ("watch",), m.watch)
     for name, state in call_states(m):
-        _timer(ctx, mf, ("states", name, "timer"), state.timer, with_vars)
+        check_value(ctx, mf, ("states", name, "timer"), state.timer, IN_STATE)
         for key, value in state.with_.items():
-            _value(ctx, mf, ("states", name, "with", key), value, with_vars)
+            check_value(ctx, mf, ("states", name, "with", key), value, IN_STATE)
+        _watches(ctx, mf, ("states", name, "watch"), state.watch)
+        if state.retry is not None:
+            check_value(ctx, mf, ("states", name, "retry", "times"), state.retry.times, RETRY)
+            check_value(ctx, mf, ("states", name, "retry", "delay"), state.retry.delay, RETRY)
+    for name, parallel in parallel_states(m):
+        check_value(ctx, mf, ("states", name, "timer"), parallel.timer, IN_STATE)
+        _watches(ctx, mf, ("states", name, "watch"), parallel.watch)
+        for region_name, region in parallel.parallel.items():
+            for key, value in region.with_.items():
+                check_value(ctx, mf, ("states", name, "parallel", region_name, "with", key), value, IN_STATE)
     for name, choice in choice_states(m):
         for i, branch in enumerate(choice.choose):
             if isinstance(branch, IfBranch):
-                try:
-                    compile_expr(branch.condition, with_vars)
-                except ExprSyntaxError as exc:
-                    ctx.error(mf, ("states", name, "choose", i, "if"), "E314", str(exc))
+                check_expression(ctx, mf, ("states", name, "choose", i, "if"), branch.condition, IN_STATE)
 
 
 def check_param_defaults(ctx: CheckContext, mf: MachineFile) -> None:

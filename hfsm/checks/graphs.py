@@ -2,13 +2,12 @@
 
 from __future__ import annotations
 
-from functools import cache
-
 from hfsm import digraph
 from hfsm.checks.context import CheckContext
+from hfsm.checks.timing import guarded, leaves_in_time
 from hfsm.graph import arcs, state_graph
 from hfsm.library import MachineFile
-from hfsm.model import CallState, ChoiceState
+from hfsm.model import ChoiceState
 
 
 def _cyclic_components(g: digraph.MultiDiGraph) -> list[set[object]]:
@@ -34,7 +33,7 @@ def _cycle_through(g: digraph.DiGraph, caller: str, callee: str) -> list[str]:
 
 def check_state_graph(ctx: CheckContext, mf: MachineFile) -> None:
     m = mf.model
-    g = state_graph(m, arcs(m, ctx.specs))
+    g = _graph(ctx, mf)
     choices = g.subgraph(("state", n) for n, s in m.states.items() if isinstance(s, ChoiceState))
     for component in _cyclic_components(choices):
         names = sorted(str(node[1]) for node in component)  # type: ignore[index]
@@ -43,18 +42,58 @@ def check_state_graph(ctx: CheckContext, mf: MachineFile) -> None:
     initial = ("state", m.initial_state)
     if initial not in g:
         return
-    reached = digraph.descendants(g, initial) | {initial}
+    reached = _reached(ctx, mf)
     for name in m.states:
         if ("state", name) not in reached:
             ctx.warn(
-                mf, ("states", name), "W400", f"state '{name}' cannot be reached from '{m.initial_state}'"
+                mf,
+                ("states", name),
+                "W400",
+                f"state '{name}' cannot be reached from '{m.initial_state}'",
+                key=True,
             )
     for i, outcome in enumerate(m.outcomes):
         timer_reaches = outcome == "timeout" and m.timer is not None
         if g.in_degree(("outcome", outcome)) == 0 and not timer_reaches:
             ctx.warn(mf, ("outcomes", i), "W401", f"outcome '{outcome}' is never reached")
-    if not _guarded(ctx, mf.name):
-        _warn_loops(ctx, mf, _ordinary(g, reached))
+    if not guarded(ctx, mf.name):
+        for names in endless_loops(ctx, mf):
+            message = (
+                f"states {' -> '.join(names)} can loop forever: no timer on '{mf.name}' or above it"
+                if len(names) > 1
+                else f"state '{names[0]}' can loop forever: no timer on '{mf.name}' or above it"
+            )
+            ctx.warn(mf, ("states", names[0]), "W402", message, key=True)
+
+
+def _graph(ctx: CheckContext, mf: MachineFile) -> digraph.MultiDiGraph:
+    key = ("graph", mf.name)
+    if key not in ctx.memo:
+        ctx.memo[key] = state_graph(mf.model, arcs(mf.model, ctx.specs))
+    return ctx.memo[key]  # type: ignore[return-value]
+
+
+def _reached(ctx: CheckContext, mf: MachineFile) -> set[object]:
+    key = ("reached", mf.name)
+    if key not in ctx.memo:
+        g, initial = _graph(ctx, mf), ("state", mf.model.initial_state)
+        ctx.memo[key] = digraph.descendants(g, initial) | {initial} if initial in g else set()
+    return ctx.memo[key]  # type: ignore[return-value]
+
+
+def endless_loops(ctx: CheckContext, mf: MachineFile) -> list[list[str]]:
+    """Loops of reached states that no timer or watch can leave (SPEC 12: those end), in file order."""
+    key = ("loops", mf.name)
+    if key not in ctx.memo:
+        m = mf.model
+        leaving = leaves_in_time(m, arcs(m, ctx.specs))
+        loops = []
+        for component in _cyclic_components(_ordinary(_graph(ctx, mf), _reached(ctx, mf))):
+            names = [n for n in m.states if ("state", n) in component]
+            if not any(target not in names for name in names for target in leaving.get(name, ())):
+                loops.append(names)
+        ctx.memo[key] = loops
+    return ctx.memo[key]  # type: ignore[return-value]
 
 
 def _ordinary(g: digraph.MultiDiGraph, reached: set[object]) -> digraph.DiGraph:
@@ -70,37 +109,3 @@ def _ordinary(g: digraph.MultiDiGraph, reached: set[object]) -> digraph.DiGraph:
 def _common_error(edge: dict[str, object]) -> bool:
     """`any: {error: X}` arcs are exceptional paths; zero-time error loops hit the entry limit."""
     return bool(edge["common"]) and edge["kind"] == "error"
-
-
-def _warn_loops(ctx: CheckContext, mf: MachineFile, g: digraph.DiGraph) -> None:
-    for component in _cyclic_components(g):
-        names = [n for n in mf.model.states if ("state", n) in component]
-        message = (
-            f"states {' -> '.join(names)} can loop forever: no timer on '{mf.name}' or above it"
-            if len(names) > 1
-            else f"state '{names[0]}' can loop forever: no timer on '{mf.name}' or above it"
-        )
-        ctx.warn(mf, ("states", names[0]), "W402", message)
-
-
-def _guarded(ctx: CheckContext, name: str) -> bool:
-    """A machine's loops are bounded when it, or every path of calls above it, has a timer."""
-    g = ctx.calls
-
-    @cache
-    def guarded(machine: str, depth: int) -> bool:
-        model = ctx.machines[machine].model
-        if model.timer is not None:
-            return True
-        callers = list(g.predecessors(machine))
-        if not callers or depth > len(ctx.machines):
-            return False
-        for caller in callers:
-            for state in g.edges[caller, machine]["states"]:
-                s = ctx.machines[caller].model.states[state]
-                timed = isinstance(s, CallState) and s.timer is not None
-                if not timed and not guarded(caller, depth + 1):
-                    return False
-        return True
-
-    return guarded(name, 0)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from hfsm.checks.context import CheckContext, choice_states
 from hfsm.library import MachineFile
-from hfsm.model import CallState, ElseBranch, IfBranch
+from hfsm.model import ChoiceState, ElseBranch, IfBranch, JoinRule, ParallelState
 from hfsm.names import RESERVED_MESSAGES, RESERVED_OUTCOMES, did_you_mean
 
 
@@ -51,10 +51,20 @@ def check_targets(ctx: CheckContext, mf: MachineFile) -> None:
     m = mf.model
     for event, target in m.any.items():
         _check_target(ctx, mf, ("any", event), target)
+    for i, watch in enumerate(m.watch):
+        _check_target(ctx, mf, ("watch", i, "then"), watch.then)
     for name, state in m.states.items():
-        if isinstance(state, CallState):
-            for event, target in state.on.items():
-                _check_target(ctx, mf, ("states", name, "on", event), target)
+        if isinstance(state, ChoiceState):
+            continue
+        for event, target in state.on.items():
+            _check_target(ctx, mf, ("states", name, "on", event), target)
+        for i, watch in enumerate(state.watch):
+            _check_target(ctx, mf, ("states", name, "watch", i, "then"), watch.then)
+        if isinstance(state, ParallelState):
+            for i, rule in enumerate(state.join):
+                key = "then" if isinstance(rule, JoinRule) else "else"
+                target = rule.then if isinstance(rule, JoinRule) else rule.else_
+                _check_target(ctx, mf, ("states", name, "join", i, key), target)
     for name, choice in choice_states(m):
         for i, branch in enumerate(choice.choose):
             key = "then" if isinstance(branch, IfBranch) else "else"

@@ -14,7 +14,7 @@ from hfsm.cli.fail import check_failures, fail_arg
 from hfsm.cli.params import parse_params
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import UsageError, UserError
-from hfsm.load import Loaded, load
+from hfsm.load import Loaded, load, worlds_needed
 from hfsm.names import is_name
 from hfsm.registry import Registry
 from hfsm.world import WORLDS_GROUP, NullWorld, World, WorldFactory
@@ -47,6 +47,7 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     p.add_argument("--check", action="store_true", help="validate and exit")
     p.add_argument("--strict", action="store_true", help="warnings are errors")
     p.add_argument("--schema", action="store_true", help="print the JSON Schema of machine files")
+    p.add_argument("--list", action="store_true", help="print every behaviour a run can call (Markdown)")
     p.add_argument("--traceback", action="store_true", help="show Python tracebacks of run-time errors")
     p.add_argument("--quiet", action="store_true", help="no summary table on stderr")
     p.add_argument(
@@ -93,19 +94,29 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
 
         sys.stdout.write(schema_text())
         return 0
+    if args.list:
+        return _list(args)
     if args.file is None:
-        raise UsageError("give a machine file (or --schema)")
+        raise UsageError("give a machine file (or --schema, or --list)")
     with stdout_to_stderr():
         registry = Registry.discover()
     if args.world is not None:
         registry = registry.for_world(args.world)
-    loaded = load([args.file], libs=args.lib, registry=registry, strict=args.strict)
+    inputs = {"none": NullWorld().inputs(), **{n: f.inputs() for n, f in factories.items()}}
+    loaded = load(
+        [args.file],
+        libs=args.lib,
+        registry=registry,
+        strict=args.strict,
+        world=args.world,
+        world_inputs=inputs,
+    )
     report.findings(loaded.warnings)
     if args.check:
         print(f"{args.file}: ok ({len(loaded.machines)} machines checked)", file=sys.stderr)
         return 0
     top = loaded.roots[0]
-    params = parse_params(args.param, top.model, top.name)
+    params = parse_params(args.param, top.model, top.name, top.doc)
     world = _world(args, loaded, registry, factories)
     started = False
     try:
@@ -123,6 +134,17 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
             print(f"wrote {path}", file=sys.stderr)
 
 
+def _list(args: argparse.Namespace) -> int:
+    from hfsm.cli.list import render
+
+    with stdout_to_stderr():
+        registry = Registry.discover()
+    if args.world is not None:
+        registry = registry.for_world(args.world)
+    sys.stdout.write(render(registry, args.lib))
+    return 0
+
+
 def _inputs(args: argparse.Namespace, loaded: Loaded) -> list[Path]:
     scenario = getattr(args, "scenario", None)
     extra = [Path(scenario)] if isinstance(scenario, str) and Path(scenario).is_file() else []
@@ -132,8 +154,7 @@ def _inputs(args: argparse.Namespace, loaded: Loaded) -> list[Path]:
 def _world(
     args: argparse.Namespace, loaded: Loaded, registry: Registry, factories: dict[str, WorldFactory]
 ) -> World:
-    called = {getattr(s, "do", None) for mf in loaded.machines.values() for s in mf.model.states.values()}
-    needs = sorted({p.spec.world for p in registry if p.spec.world and p.spec.name in called})
+    needs = worlds_needed(loaded.machines, registry)
     name = args.world or (needs[0] if needs else "none")
     wrong = [w for w in needs if w != name]
     if wrong:

@@ -26,6 +26,7 @@ COMMANDS = {
     "check": ("hfsm.cli.run", ["examples/hello.yaml", "--check"]),
     "check the paper's machines": ("hfsm.cli.run", ["machines/move_furniture.yaml", "--check"]),
     "world none": ("hfsm.cli.run", ["examples/hello.yaml", "--world", "none", "--quiet"]),
+    "list": ("hfsm.cli.run", ["--list"]),
     "graph": ("hfsm.cli.graph", ["machines/move_table.yaml", "-o", "{tmp}", "--format", "dot"]),
 }
 

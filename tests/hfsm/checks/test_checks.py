@@ -119,7 +119,7 @@ def test_all_findings_of_a_valid_schema_at_once(machine: Machine) -> None:
     assert findings(path) == [
         "3:24 E302 unknown param 'secnds' of 'wait'; did you mean 'seconds'?",
         "3:47 E301 unknown target 'donne': not a state or outcome; did you mean 'done'?",
-        "4:6 W400 state 'b' cannot be reached from 'a'",
+        "4:3 W400 state 'b' cannot be reached from 'a'",
         "4:24 E310 the state has a timer, so 'on' must map 'timeout'",
     ]
 

@@ -1,0 +1,76 @@
+"""The forgotten `${…}` (issue 13): a string that reads like an expression but is not wrapped is
+taken as text, and fails far away and much later. Warned here, at the string (W405)."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import Any
+
+from hfsm.checks.context import CheckContext, call_states, parallel_states
+from hfsm.expr import reads
+from hfsm.library import MachineFile
+from hfsm.model import CallState, Region
+
+Where = tuple[str | int, ...]
+_ROOTS = ("vars.", "params.", "agent.", "state.", "machine.", "in.")
+
+
+def reads_like_expression(text: str) -> bool:
+    """`vars.lap + 1`, `params.target`: parses as an expression and reads a name of SPEC 7."""
+    return "${" not in text and any(name.startswith(_ROOTS) for name in reads(text))
+
+
+def wrapped(text: str) -> str:
+    return "${" + text.strip() + "}"
+
+
+def check_forgotten_wraps(ctx: CheckContext, mf: MachineFile) -> None:
+    for name, value in mf.model.outputs.items():
+        _strings(ctx, mf, ("outputs", name), value)
+    for name, state in call_states(mf.model):
+        _call(ctx, mf, ("states", name), state)
+    for name, parallel in parallel_states(mf.model):
+        for region_name, region in parallel.parallel.items():
+            _call(ctx, mf, ("states", name, "parallel", region_name), region)
+
+
+def _call(ctx: CheckContext, mf: MachineFile, where: Where, call: CallState | Region) -> None:
+    spec = ctx.specs.get(call.do)
+    for key, value in call.with_.items():
+        at = (*where, "with", key)
+        if spec is not None and spec.open_params and key in mf.model.vars:
+            if _sets_number_to_text(ctx, mf, at, key, value):
+                continue
+        elif spec is not None and key in spec.params and spec.params[key].type in ("int", "float", "bool"):
+            continue  # a string there is an error (E306), which says how to wrap it
+        _strings(ctx, mf, at, value)
+
+
+def _sets_number_to_text(ctx: CheckContext, mf: MachineFile, at: Where, var: str, value: Any) -> bool:
+    initial = mf.model.vars[var]
+    typed = isinstance(initial, bool | int | float)
+    if not (typed and isinstance(value, str) and "${" not in value):
+        return False
+    kind = type(initial).__name__
+    fix = f"; write '{wrapped(value)}'" if reads_like_expression(value) else ""
+    message = f"var '{var}' starts as {kind}, but this sets it to the text '{value}'{fix}"
+    ctx.warn(mf, at, "W405", message)
+    return True
+
+
+def _strings(ctx: CheckContext, mf: MachineFile, where: Where, value: Any) -> None:
+    for path, text in _texts(where, value):
+        if reads_like_expression(text):
+            message = f"'{text}' reads like an expression but is taken as text; write '{wrapped(text)}'"
+            ctx.warn(mf, path, "W405", message)
+
+
+def _texts(where: Where, value: Any) -> Iterator[tuple[Where, str]]:
+    if isinstance(value, str):
+        yield where, value
+    elif isinstance(value, dict):
+        for key, item in value.items():
+            yield from _texts((*where, key), item)
+    elif isinstance(value, list):
+        for i, item in enumerate(value):
+            yield from _texts((*where, i), item)
