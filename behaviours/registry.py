@@ -10,6 +10,7 @@ changing a primitive (a test fails when it is stale):
 from __future__ import annotations
 
 from importlib.resources import files
+from importlib.resources.abc import Traversable
 
 from hfsm.declarations import loads
 from hfsm.primitive import Primitive
@@ -21,6 +22,11 @@ DECLARATIONS = "primitives.json"
 def register(registry: Registry) -> None:
     """Add this package's primitives to a registry, from their declarations."""
     registry.add(*loads(files("behaviours").joinpath(DECLARATIONS).read_text(encoding="utf-8")))
+
+
+def machines() -> Traversable:
+    """The `hfsm.machines` entry point: the paper's machines, shipped in the package."""
+    return files("behaviours") / "machines"
 
 
 def primitives() -> tuple[Primitive, ...]:

@@ -50,7 +50,8 @@ class Library:
 
     @classmethod
     def for_file(cls, top: Path, libs: list[Path], registry: Registry) -> Library:
-        return cls([top.resolve().parent, *(p.resolve() for p in libs), PROJECT_MACHINES], registry)
+        plugins = [p.resolve() for p in registry.machine_folders]
+        return cls([top.resolve().parent, *(p.resolve() for p in libs), *plugins, PROJECT_MACHINES], registry)
 
     def find(self, name: str) -> Path | None:
         for folder in self.search:

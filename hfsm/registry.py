@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
+from pathlib import Path
+from typing import Any
 
 from hfsm import plugins
 from hfsm.primitive import Primitive
 
 GROUP = "hfsm.primitives"
+MACHINES_GROUP = "hfsm.machines"  # an entry point `module:function` returns a folder of machine files
 
 
 class Registry:
@@ -16,6 +19,7 @@ class Registry:
     def __init__(self, primitives: Iterable[Primitive] = ()) -> None:
         self._by_name: dict[str, Primitive] = {}
         self.elsewhere: dict[str, str] = {}  # primitives left out: name -> the world they need
+        self.machine_folders: list[Path] = []  # plug-ins' machines, searched after --lib folders
         self.add(*primitives)
 
     def add(self, *primitives: Primitive) -> None:
@@ -40,6 +44,7 @@ class Registry:
         """The primitives a run in `world` may call; the others are remembered in `elsewhere`."""
         kept = Registry(p for p in self if p.spec.world in (None, world))
         kept.elsewhere = {p.spec.name: str(p.spec.world) for p in self if p.spec.world not in (None, world)}
+        kept.machine_folders = list(self.machine_folders)
         return kept
 
     @classmethod
@@ -63,6 +68,10 @@ class Registry:
                 continue
             registry.add(*staging)
             owners.update((p.spec.name, ep.name) for p in staging)
+        for ep, folder_of in plugins.load_each(MACHINES_GROUP, _callable_problem):
+            ok, folder = plugins.run_hook(ep, folder_of)
+            if ok:
+                registry.machine_folders.append(Path(str(folder)))
         return registry
 
 
@@ -75,3 +84,7 @@ def _register_problem(ep: object, obj: object) -> str | None:
     if not callable(obj):
         return f"names {type(obj).__name__} {obj!r}, not a register function `register(registry)`"
     return None
+
+
+def _callable_problem(ep: Any, obj: Any) -> str | None:
+    return None if callable(obj) else f"is {type(obj).__name__}, not a function returning a folder"

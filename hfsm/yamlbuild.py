@@ -92,6 +92,25 @@ def _implicit_kind(text: str) -> str | None:
     return None
 
 
+_CONVERT_ME: Any = object()
+
+
+class _PlainScalars(dict[str, Any]):
+    """Plain scalar text -> its value, for texts seen before; _CONVERT_ME when it needs checking."""
+
+    def __missing__(self, text: str) -> Any:
+        if not text:
+            return None
+        kind = _implicit_kind(text)
+        try:
+            value = text if kind is None else _CONVERT[kind](text)
+        except ValueError:
+            return _CONVERT_ME  # reported, at each place, by the slow path
+        if len(self) < 10_000:
+            self[text] = value
+        return value
+
+
 _NO_KEY: Any = object()  # a mapping waits for its next key
 _BAD_KEY: Any = object()  # the key was refused: build the value, then drop it
 
@@ -146,6 +165,7 @@ class EventBuilder:
         self.recording = 0  # anchored collections open now
         self.done = False
         self.alias_pos: Pos = (1, 1)  # of the alias being replayed
+        self._plain = _PlainScalars()
         self.empty = False  # the stream holds no document
 
     def error(self, pos: Pos, code: str, message: str) -> None:
@@ -154,10 +174,41 @@ class EventBuilder:
     def feed(self, get: Callable[[], Any]) -> None:
         """Build the root node from `get()`, the parser's next event."""
         pending: list[Iterator[int]] = []  # aliases being replayed: indices into `log`
+        stack, values, plain = self.stack, self.built.values, self._plain
         while not self.done:
-            event = self._next(get, pending)
-            if event is None:
-                continue
+            if pending or self.recording or not stack:
+                event = self._next(get, pending)
+                if event is None:
+                    continue
+            else:
+                event = get()
+                # The common case in one place, for speed: a plain scalar in a list or as a value.
+                if event.__class__ is _SCALAR and event.tag is None and event.anchor is None:
+                    parent = stack[-1]
+                    if parent.is_list or parent.key is not _NO_KEY:
+                        self.nodes += 1
+                        mark = event.start_mark
+                        pos = (mark.line + 1, mark.column + 1)
+                        if self.nodes > MAX_NODES:
+                            raise TooBig(pos, f"the document has more than {MAX_NODES:,} nodes")
+                        text = event.value
+                        value = plain[text] if event.implicit[0] else text
+                        if value is _CONVERT_ME:
+                            value = self._scalar(event, pos)
+                        if parent.is_list:
+                            path = (*parent.path, len(parent.value))
+                            parent.value.append(value)
+                        else:
+                            key, parent.key = parent.key, _NO_KEY
+                            if key is _BAD_KEY:
+                                continue
+                            path = (*parent.path, key)
+                            parent.value[key] = value
+                        values[path] = pos
+                        continue
+                event = self._take(event, pending)
+                if event is None:
+                    continue
             replay = bool(pending)
             cls = event.__class__
             if cls in _ENDS:
@@ -197,7 +248,10 @@ class EventBuilder:
                 pending.append(iter(range(event.start, event.end)))
                 return None
             return event
-        event = get()
+        return self._take(get(), pending)
+
+    def _take(self, event: Any, pending: list[Iterator[int]]) -> Any:
+        """An event from the parser: an alias starts a replay (None), an anchored one is logged."""
         if event.__class__ is _ALIAS:
             self.alias_pos = _pos(event)
             ref = self.anchors.get(event.anchor or "")

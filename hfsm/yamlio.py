@@ -112,8 +112,14 @@ def parse_text(text: str, file: str) -> Document:
         extra = hint(message, text.splitlines(), line, col)
         message = f"YAML syntax: {message}" + (f"; {extra}" if extra else "")
         raise UserError([Finding(file, line, col, "E100", message)]) from None
+    except yaml.reader.ReaderError as exc:
+        line, col = _line_col(text, exc.position)
+        char = exc.character if isinstance(exc.character, int) else ord(exc.character)
+        message = f"the control character 0x{char:02x} is not allowed in YAML"
+        raise UserError([Finding(file, line, col, "E100", message)]) from None
     except yaml.YAMLError as exc:
-        raise UserError([Finding(file, 1, 1, "E100", f"YAML syntax: {exc}")]) from None
+        message = " ".join(str(exc).split())
+        raise UserError([Finding(file, 1, 1, "E100", f"YAML syntax: {message}")]) from None
     except TooBig as big:
         raise UserError([Finding(file, *big.pos, big.code, big.message)]) from None
     finally:
@@ -125,6 +131,11 @@ def parse_text(text: str, file: str) -> Document:
         raise UserError(built.errors)
     doc.data, doc.keys, doc.values = built.data, built.keys, built.values
     return doc
+
+
+def _line_col(text: str, index: int) -> Pos:
+    before = text[:index]
+    return before.count("\n") + 1, index - (before.rfind("\n") + 1) + 1
 
 
 def _drive(parser: Any, builder: EventBuilder, file: str) -> None:

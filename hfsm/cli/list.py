@@ -1,7 +1,7 @@
 """`hfsm-run --list`: every behaviour a run can call, as Markdown (docs/BEHAVIOURS.md is its output).
 
 Built-ins, the registered primitives (from their declarations: no simulator is imported) and the
-machines along the search path (`--lib` folders, then the project's machines).
+machines along the search path (`--lib` folders, then the plug-ins' machines and the project's).
 """
 
 from __future__ import annotations

@@ -102,6 +102,7 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         registry = Registry.discover()
     if args.world is not None:
         registry = registry.for_world(args.world)
+    args.file = _named(args.file, args.lib, registry)
     inputs = {"none": NullWorld().inputs(), **{n: f.inputs() for n, f in factories.items()}}
     loaded = load(
         [args.file],
@@ -134,6 +135,15 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
             print(f"wrote {path}", file=sys.stderr)
 
 
+def _named(file: Path, libs: list[Path], registry: Registry) -> Path:
+    """FILE, or a machine's name (`hfsm-run move_furniture`) found in --lib folders and plug-ins."""
+    if file.exists() or not is_name(str(file)):
+        return file
+    from hfsm.library import Library
+
+    return Library([*libs, *registry.machine_folders], registry).find(str(file)) or file
+
+
 def _list(args: argparse.Namespace) -> int:
     from hfsm.cli.list import render
 
@@ -141,7 +151,7 @@ def _list(args: argparse.Namespace) -> int:
         registry = Registry.discover()
     if args.world is not None:
         registry = registry.for_world(args.world)
-    sys.stdout.write(render(registry, args.lib))
+    sys.stdout.write(render(registry, [*args.lib, *registry.machine_folders]))
     return 0
 
 

@@ -1,0 +1,63 @@
+"""A wheel of the project, and of the plug-in template, installed in a fresh venv: the paper's task
+and the template's machine run by name from a folder that is no checkout (issue 12.3).
+
+The fresh venv takes the other dependencies (pybullet, pydantic, ...) from this one through a
+`.pth` line, so nothing is downloaded; its own site-packages come first, so `hfsm`, `behaviours`
+and `sim` are the wheel's, not this checkout's.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+import sys
+import sysconfig
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+LEFT_OUT = shutil.ignore_patterns(
+    ".git", ".venv", "build", "*.egg-info", "__pycache__", ".*_cache", ".hypothesis", "out", "docs", "tests", "tools"
+)
+
+
+def sh(*argv: str | Path, cwd: Path) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([str(a) for a in argv], cwd=cwd, capture_output=True, text=True, timeout=300, check=False)
+
+
+@pytest.mark.slow
+def test_wheels_run_the_task_and_the_template_from_any_folder(tmp_path: Path) -> None:
+    source = tmp_path / "src"
+    shutil.copytree(ROOT, source, symlinks=True, ignore=LEFT_OUT)
+    dist = tmp_path / "dist"
+    built = sh(sys.executable, "-m", "pip", "wheel", "-q", "--no-deps", "--no-build-isolation", "-w", dist,
+               source, source / "examples" / "plugin_template", cwd=tmp_path)
+    assert built.returncode == 0, built.stderr
+    venv = tmp_path / "venv"
+    assert sh(sys.executable, "-m", "venv", "--without-pip", venv, cwd=tmp_path).returncode == 0
+    site = next((venv / "lib").glob("python3*/site-packages"))
+    (site / "deps.pth").write_text(sysconfig.get_paths()["purelib"] + "\n")
+    python = venv / "bin" / "python"
+    installed = sh(sys.executable, "-m", "pip", "--python", python, "install", "-q", "--no-deps", "--no-index",
+                   *sorted(dist.glob("*.whl")), cwd=tmp_path)
+    assert installed.returncode == 0, installed.stderr
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    where = sh(python, "-c", "import hfsm.cli.run, behaviours.registry as b; print(hfsm.cli.run.__file__, b.machines())",
+               cwd=elsewhere)
+    assert where.stdout.count(str(site)) == 2, where.stdout
+
+    hfsm_run = venv / "bin" / "hfsm-run"
+    checked = sh(hfsm_run, "move_furniture", "--check", cwd=elsewhere)
+    assert checked.returncode == 0 and "move_furniture.yaml: ok (" in checked.stderr, checked.stderr
+    ran = sh(hfsm_run, "move_furniture", "--max-time", "2", "--no-video", "--json", "--out", "o", cwd=elsewhere)
+    result = json.loads(ran.stdout)
+    assert ran.returncode == 1 and result["score"]["robot_collisions"] == 0, ran.stderr
+    assert (elsewhere / "o" / "opposite_long_side-seed0.jsonl").is_file()
+
+    launched = sh(hfsm_run, "launch", "--param", "start=2", "--json", "--quiet", cwd=elsewhere)
+    assert json.loads(launched.stdout) == {"outcome": "done", "outputs": {"counted": 2}, "time": 1.0}, launched.stderr
+    listed = sh(hfsm_run, "--list", cwd=elsewhere).stdout
+    assert "### `count_down`" in listed and "### `launch`" in listed and "### `move_furniture`" in listed
