@@ -174,63 +174,68 @@ class EventBuilder:
     def feed(self, get: Callable[[], Any]) -> None:
         """Build the root node from `get()`, the parser's next event."""
         pending: list[Iterator[int]] = []  # aliases being replayed: indices into `log`
-        stack, values, plain = self.stack, self.built.values, self._plain
+        stack = self.stack
         while not self.done:
             if pending or self.recording or not stack:
                 event = self._next(get, pending)
-                if event is None:
-                    continue
             else:
                 event = get()
-                # The common case in one place, for speed: a plain scalar in a list or as a value.
-                if event.__class__ is _SCALAR and event.tag is None and event.anchor is None:
-                    parent = stack[-1]
-                    if parent.is_list or parent.key is not _NO_KEY:
-                        self.nodes += 1
-                        mark = event.start_mark
-                        pos = (mark.line + 1, mark.column + 1)
-                        if self.nodes > MAX_NODES:
-                            raise TooBig(pos, f"the document has more than {MAX_NODES:,} nodes")
-                        text = event.value
-                        value = plain[text] if event.implicit[0] else text
-                        if value is _CONVERT_ME:
-                            value = self._scalar(event, pos)
-                        if parent.is_list:
-                            path = (*parent.path, len(parent.value))
-                            parent.value.append(value)
-                        else:
-                            key, parent.key = parent.key, _NO_KEY
-                            if key is _BAD_KEY:
-                                continue
-                            path = (*parent.path, key)
-                            parent.value[key] = value
-                        values[path] = pos
-                        continue
-                event = self._take(event, pending)
-                if event is None:
+                if self._plain_value(event):
                     continue
-            replay = bool(pending)
-            cls = event.__class__
-            if cls in _ENDS:
-                self._end(replay)
-                continue
-            mark = event.start_mark
-            pos = (mark.line + 1, mark.column + 1)
-            self.nodes += 1
-            if self.nodes > MAX_NODES:
-                raise TooBig(pos, f"the document has more than {MAX_NODES:,} nodes")
-            if cls is _SCALAR:
-                value = self._scalar(event, pos)
-                if event.anchor is not None and not replay:
-                    self.anchors[event.anchor] = _Ref(len(self.log) - 1, len(self.log))
-                self._place(event, value, pos)
-                continue
-            value = self._collection(event, cls is _MAP_START, pos)
-            frame = _Frame(value, self._place(event, value, pos), cls is _SEQ_START)
+                event = self._take(event, pending)
+            if event is not None:
+                self._build(event, bool(pending))
+
+    def _plain_value(self, event: Any) -> bool:
+        """The common case, in one place for speed: a plain scalar in a list or as a mapping's value."""
+        if event.__class__ is not _SCALAR or event.tag is not None or event.anchor is not None:
+            return False
+        parent = self.stack[-1]
+        if not parent.is_list and parent.key is _NO_KEY:
+            return False
+        self.nodes += 1
+        mark: Any = event.start_mark
+        pos = (mark.line + 1, mark.column + 1)
+        if self.nodes > MAX_NODES:
+            raise TooBig(pos, f"the document has more than {MAX_NODES:,} nodes")
+        text = event.value
+        value = self._plain[text] if event.implicit[0] else text
+        if value is _CONVERT_ME:
+            value = self._scalar(event, pos)
+        if parent.is_list:
+            path = (*parent.path, len(parent.value))
+            parent.value.append(value)
+        else:
+            key, parent.key = parent.key, _NO_KEY
+            if key is _BAD_KEY:
+                return True
+            path = (*parent.path, key)
+            parent.value[key] = value
+        self.built.values[path] = pos
+        return True
+
+    def _build(self, event: Any, replay: bool) -> None:
+        cls = event.__class__
+        if cls in _ENDS:
+            self._end(replay)
+            return
+        mark = event.start_mark
+        pos = (mark.line + 1, mark.column + 1)
+        self.nodes += 1
+        if self.nodes > MAX_NODES:
+            raise TooBig(pos, f"the document has more than {MAX_NODES:,} nodes")
+        if cls is _SCALAR:
+            value = self._scalar(event, pos)
             if event.anchor is not None and not replay:
-                frame.anchor, frame.log_start = event.anchor, len(self.log) - 1
-                self.recording += 1
-            self.stack.append(frame)
+                self.anchors[event.anchor] = _Ref(len(self.log) - 1, len(self.log))
+            self._place(event, value, pos)
+            return
+        value = self._collection(event, cls is _MAP_START, pos)
+        frame = _Frame(value, self._place(event, value, pos), cls is _SEQ_START)
+        if event.anchor is not None and not replay:
+            frame.anchor, frame.log_start = event.anchor, len(self.log) - 1
+            self.recording += 1
+        self.stack.append(frame)
 
     def _next(self, get: Callable[[], Any], pending: list[Iterator[int]]) -> Any:
         """The next event to build, from a replay under way or from the parser; None: look again."""

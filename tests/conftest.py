@@ -20,3 +20,11 @@ settings.load_profile("ci")
 def machine(tmp_path: Path) -> Callable[..., Path]:
     """Write a machine file: machine('name', '''yaml''') -> its path."""
     return lambda name, text: write(tmp_path, name, text)
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    """Collect tests/machines/*.test.yaml also where the plug-in's entry point is not installed yet."""
+    from hfsm.testing import plugin
+
+    if not config.pluginmanager.is_registered(plugin):
+        config.pluginmanager.register(plugin, "hfsm.testing.plugin")

@@ -19,7 +19,7 @@ from hfsm.registry import Registry
 from hfsm.spec import BehaviourSpec, coerce, type_ok
 from hfsm.testing.calls import callees, reachable
 from hfsm.testing.check_expect import check_expect
-from hfsm.testing.model import ByAgent, Case, StandIn, Step, TestFile
+from hfsm.testing.model import ByAgent, Case, FailAt, StandIn, Step, TestFile
 from hfsm.testing.plan import CasePlan, StandInPlan
 from hfsm.yamlio import Document, Path_, read_mapping
 
@@ -68,7 +68,9 @@ class _FileChecker:
         before = len(self.findings)
         machine, machine_at = self._pick(case, "machine", at)
         if machine is None:
-            self.error(at, "T300", "no machine to test: give `machine:` here or at the top of the file")
+            self.error(
+                at, "T300", "no machine to test: give `machine:` here or at the top of the file", key=True
+            )
             return None
         libs, _ = self._pick(case, "lib", at)
         loaded = self._load(machine, machine_at, libs or [])
@@ -82,7 +84,7 @@ class _FileChecker:
         params = self._params(top.model, top.name, case, at)
         stand_ins = self._stand_ins(loaded, case, at, set(agents))
         pruned = self._world_free(loaded, top.name, stand_ins, machine_at)
-        inputs, messages = self._script(case, at, set(agents))
+        inputs, messages, fail = self._script(case, at, set(agents))
         expect = check_expect(self, loaded, stand_ins, case.expect, (*at, "expect"), set(agents))
         if len(self.findings) > before:
             return None
@@ -102,6 +104,7 @@ class _FileChecker:
             stand_ins=stand_ins,
             inputs=inputs,
             messages=messages,
+            fail=fail,
             expect=expect,
             expect_path=(*at, "expect"),
             pruned=pruned,
@@ -264,9 +267,17 @@ class _FileChecker:
 
     # --- scripted inputs and messages ----------------------------------------------------------
 
-    def _script(self, case: Case, at: Path_, agents: set[str]) -> tuple[list[Any], list[Any]]:
+    def _script(self, case: Case, at: Path_, agents: set[str]) -> tuple[list[Any], list[Any], list[FailAt]]:
         inputs, inputs_at = self._pick(case, "inputs", at)
         messages, messages_at = self._pick(case, "messages", at)
+        fail, fail_at = self._pick(case, "fail", at)
+        for i, failure in enumerate(fail or []):
+            if failure.agent not in agents:
+                self.error(
+                    (*fail_at, i, "agent"),
+                    "T311",
+                    f"no agent '{failure.agent}' in this test{did_you_mean(failure.agent, agents)}",
+                )
         for i, entry in enumerate(inputs or []):
             if entry.agent is not None and entry.agent not in agents:
                 self.error(
@@ -284,6 +295,7 @@ class _FileChecker:
         return (
             [(e, (*inputs_at, i)) for i, e in enumerate(inputs or [])],
             [(m, (*messages_at, i)) for i, m in enumerate(messages or [])],
+            list(fail or []),
         )
 
 

@@ -13,12 +13,12 @@ from hfsm.testing.plan import CasePlan
 from hfsm.testing.standins import Calls
 from hfsm.yamlio import Path_
 
-FIELDS = ("outcome", "time", "outputs", "states", "never", "sends", "calls", "called_with")
+FIELDS = ("failed", "outcome", "time", "outputs", "states", "never", "sends", "calls", "called_with")
 SHOWN = 40  # longest list of states or messages shown in a failure
 
 
 @dataclass(frozen=True, order=True)
-class Failure:
+class Mismatch:
     file: str  # where the expectation is written
     line: int
     col: int
@@ -67,13 +67,13 @@ class Comparison:
         self.result = result
         self.trace = trace
         self.calls = calls
-        self.failures: list[Failure] = []
+        self.failures: list[Mismatch] = []
 
     def fail(self, path: Path_, message: str, *, key: bool = False) -> None:
         line, col = self.plan.doc.pos(path, key=key)
-        self.failures.append(Failure(self.plan.file, line, col, message))
+        self.failures.append(Mismatch(self.plan.file, line, col, message))
 
-    def run(self) -> list[Failure]:
+    def run(self) -> list[Mismatch]:
         expect, at = self.plan.expect, self.plan.expect_path
         error = self.result.error
         if expect.error is not None:
@@ -109,6 +109,12 @@ class Comparison:
         if got.outcome != expected:
             ended = f"ended in {show(got.outcome)}" if got.outcome is not None else "did not end"
             self.fail(at, f"{agent}: expected outcome {show(expected)}; it {ended} at t = {got.time:g} s")
+
+    def _failed(self, agent: str, expected: bool | None, at: Path_) -> None:
+        got = self.result.agents[agent]
+        if expected is not None and (got.failed is not None) != expected:
+            happened = f"it failed ({got.failed}) at t = {got.time:g} s" if got.failed else "it did not"
+            self.fail(at, f"{agent}: expected {'' if expected else 'not '}to fail; {happened}")
 
     def _time(self, agent: str, expected: float | TimeRange | None, at: Path_) -> None:
         got = self.result.agents[agent].time

@@ -60,6 +60,14 @@ class MessageIn(Strict):
     data: dict[str, Any] = Field(default_factory=dict)
 
 
+class FailAt(Strict):
+    """An agent that fails at time `at` (SPEC 15): it acts no more, sends nothing, hears nothing."""
+
+    agent: Name
+    at: Seconds
+    reason: str = "scripted by the test"
+
+
 class TimeRange(Strict):
     min: Seconds | None = None
     max: Seconds | None = None
@@ -88,6 +96,7 @@ class InOrderSends(Strict):
 
 class AgentExpect(Strict):
     outcome: Name | None = Field(default=None, description="null: the agent did not end")
+    failed: bool | None = Field(default=None, description="whether the agent failed (SPEC 15)")
     time: Time | None = Field(default=None, description="when its top machine ended (s)")
     outputs: dict[str, Any] | None = Field(default=None, description="these outputs, with these values")
     states: list[StatePath] | InOrderStates | None = Field(
@@ -125,6 +134,7 @@ class Setup(Strict):
     stand_ins: dict[Name, StandIn] | None = Field(default=None, description="behaviour -> its script")
     inputs: list[InputsAt] | None = None
     messages: list[MessageIn] | None = None
+    fail: list[FailAt] | None = Field(default=None, description="agents that fail, and when")
 
 
 class Case(Setup):

@@ -8,7 +8,7 @@ from typing import Any
 from hfsm.load import Loaded
 from hfsm.registry import Registry
 from hfsm.spec import BehaviourSpec
-from hfsm.testing.model import Expect, InputsAt, MessageIn, Step
+from hfsm.testing.model import Expect, FailAt, InputsAt, MessageIn, Step
 from hfsm.yamlio import Document, Path_
 
 
@@ -40,6 +40,7 @@ class CasePlan:
     stand_ins: dict[str, StandInPlan]
     inputs: list[tuple[InputsAt, Path_]]
     messages: list[tuple[MessageIn, Path_]]
+    fail: list[FailAt]
     expect: Expect
     expect_path: Path_
     pruned: set[str] = field(default_factory=set)  # machines not run: only stand-ins call them

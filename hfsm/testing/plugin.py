@@ -10,7 +10,7 @@ import pytest
 
 from hfsm.errors import UserError
 from hfsm.testing.check import is_test_file, read_test_file
-from hfsm.testing.expect import Failure
+from hfsm.testing.expect import Mismatch
 from hfsm.testing.plan import CasePlan
 from hfsm.testing.runner import run_case
 
@@ -33,7 +33,7 @@ class BehaviourTestFile(pytest.File):
 
 
 class CaseFailed(Exception):
-    def __init__(self, failures: list[Failure]) -> None:
+    def __init__(self, failures: list[Mismatch]) -> None:
         super().__init__("\n".join(f.format() for f in failures))
         self.failures = failures
 

@@ -5,8 +5,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from hfsm.runtime.failing import Failure
 from hfsm.runtime.run import RunOptions, RunResult, run
-from hfsm.testing.expect import Comparison, Failure
+from hfsm.testing.expect import Comparison, Mismatch
 from hfsm.testing.plan import CasePlan
 from hfsm.testing.standins import program_for
 from hfsm.testing.world import ScriptedWorld
@@ -16,7 +17,7 @@ from hfsm.trace import ListTrace
 @dataclass
 class CaseResult:
     plan: CasePlan
-    failures: list[Failure]
+    failures: list[Mismatch]
     result: RunResult
     trace: list[dict[str, Any]]
 
@@ -31,7 +32,8 @@ def run_case(plan: CasePlan) -> CaseResult:
     messages = [message for message, _ in plan.messages]
     world = ScriptedWorld(inputs, messages, plan.agents, plan.dt)
     trace = ListTrace()
-    options = RunOptions(plan.top, plan.agents, plan.params, plan.seed, plan.max_time)
+    failing = [Failure(f.agent, f.at, f.reason) for f in plan.fail]
+    options = RunOptions(plan.top, plan.agents, plan.params, plan.seed, plan.max_time, failing)
     try:
         result = run(program, world, options, trace)
     finally:

@@ -27,6 +27,7 @@ COMMANDS = {
     "check the paper's machines": ("hfsm.cli.run", ["machines/move_furniture.yaml", "--check"]),
     "world none": ("hfsm.cli.run", ["examples/hello.yaml", "--world", "none", "--quiet"]),
     "list": ("hfsm.cli.run", ["--list"]),
+    "test": ("hfsm.cli.test", ["tests/machines/elect_leader.test.yaml"]),
     "graph": ("hfsm.cli.graph", ["machines/move_table.yaml", "-o", "{tmp}", "--format", "dot"]),
 }
 
@@ -44,7 +45,8 @@ def probe(module: str, argv: list[str]) -> tuple[dict[str, object], str, str]:
 def test_world_free_commands_import_no_simulator(name: str, tmp_path: Path) -> None:
     module, argv = COMMANDS[name]
     report, _, err = probe(module, [a.format(tmp=tmp_path) for a in argv])
-    assert report == {"code": 0, "heavy": []}, err
+    passed = (0, 1) if name == "test" else (0,)  # hfsm-test: a failing case is not this test's concern
+    assert report["code"] in passed and report["heavy"] == [], err
     assert "pybullet build time" not in err
 
 

@@ -343,3 +343,73 @@ def test_committed_schema_is_current(capsys: pytest.CaptureFixture[str]) -> None
     assert (ROOT / "docs" / "test.schema.json").read_text() == out, (
         "run: hfsm-test --schema > docs/test.schema.json"
     )
+
+
+def test_agents_that_fail(ping: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    path = write(
+        ping.parent,
+        "fail.test.yaml",
+        """
+        machine: ping
+        agents: [a, b]
+        params: {tries: 1}
+        fail: [{agent: b, at: 0.5, reason: battery}]
+        tests:
+          b_goes_silent:
+            expect:
+              agents:
+                a: {outcome: gave_up, time: 1, failed: false}
+                b: {outcome: null, failed: true, time: 0.5}
+          nobody_fails:
+            fail: []
+            expect: {failed: true}
+        """,
+    )
+    code, out, _ = hfsm_test(capsys, path)
+    assert code == 1
+    assert "b_goes_silent" not in out
+    assert "fail.test.yaml:13:22: a: expected to fail; it did not" in out
+    assert "fail.test.yaml:13:22: b: expected to fail; it did not" in out
+
+
+def test_machines_by_path_and_by_lib_and_picking_cases(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (tmp_path / "lib").mkdir()
+    (tmp_path / "tests").mkdir()
+    write(
+        tmp_path / "lib",
+        "nap.yaml",
+        "outcomes: [done]\nstates:\n  a: {do: wait, with: {seconds: 1}, on: {done: done}}\n",
+    )
+    write(
+        tmp_path / "lib",
+        "twice.yaml",
+        "outcomes: [done]\nstates:\n  a: {do: nap, on: {done: b}}\n  b: {do: nap, on: {done: done}}\n",
+    )
+    path = write(
+        tmp_path / "tests",
+        "nap.test.yaml",
+        """
+        lib: [../lib]
+        tests:
+          by_name:
+            machine: twice
+            expect: {outcome: done, time: 2, states: [a, a/a, b, b/a]}
+          by_path:
+            machine: ../lib/nap.yaml
+            expect: {time: 1}
+          nothing_to_test:
+            expect: {}
+        """,
+    )
+    code, _, err = hfsm_test(capsys, path)
+    assert code == 2
+    assert err.strip().endswith(
+        "nap.test.yaml:9:3: error[T300]: no machine to test: give `machine:` here or at the top of the file"
+    )
+    path.write_text(path.read_text().replace("  nothing_to_test:\n    expect: {}\n", ""))
+    assert main([str(tmp_path), "-k", "by_"]) == 0
+    assert "2 passed, 0 failed (2 cases in 1 files" in capsys.readouterr().err
+    assert main([str(path), "-k", "path", "-v"]) == 0
+    assert capsys.readouterr().out.endswith("nap.test.yaml::by_path\n")
