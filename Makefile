@@ -15,7 +15,14 @@ $(STAMP): pyproject.toml
 run: $(STAMP)
 	$(BIN)/hfsm-run machines/move_furniture.yaml
 
-test: $(STAMP)
+# The monitor's browser tests drive Debian's Chromium (no browser download); installed once, as root.
+CHROMIUM := $(VENV)/.chromium
+$(CHROMIUM): $(STAMP)
+	command -v chromium >/dev/null || { apt-get update -qq && \
+		DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends chromium; }
+	touch $(CHROMIUM)
+
+test: $(STAMP) $(CHROMIUM)
 	$(BIN)/python -m pytest
 
 lint: $(STAMP)
@@ -29,6 +36,7 @@ clean:
 figures: $(STAMP)
 	$(BIN)/hfsm-graph machines -o docs/figures --format svg,dot --prune
 	$(BIN)/hfsm-graph examples -o docs/figures/examples --format svg,dot --no-legend --prune
+	$(BIN)/hfsm-graph tests/diagram/data/search.yaml --depth 2 -o docs/figures/depth --format svg,dot --no-legend --no-overview --prune
 
 # Primitives' declarations, read without importing the simulator: see behaviours/registry.py.
 .PHONY: declarations

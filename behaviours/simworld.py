@@ -34,6 +34,30 @@ def load_scenario(name_or_path: str) -> tuple[Scenario, str]:
     return located.validate(Scenario, read_mapping(path, "a scenario")), path.stem
 
 
+POSE_EVERY = 0.5  # seconds between the poses the trace gets
+
+
+class Labels:
+    """Reads the trace as it is written: for each robot, the state under its top machine (the role,
+    as `leader`) and the behaviour it runs deepest, shown beside its name in the video."""
+
+    def __init__(self, labels: dict[str, str]) -> None:
+        self.labels = labels
+
+    def write(self, record: dict[str, Any]) -> None:
+        if record["kind"] != "enter" or len(record["path"]) < 2:
+            return
+        path = record["path"]
+        self.labels[record["agent"]] = f"{path[1]}: {record.get('do') or path[-1]}" if len(path) > 2 \
+            else path[1]
+
+    def flush(self) -> None:
+        pass
+
+    def close(self) -> None:
+        pass
+
+
 class SimWorld:
     """Implements hfsm.world.World over a sim.World."""
 
@@ -100,6 +124,17 @@ class SimWorld:
         if self.progress_every and self.world.time + 1e-9 >= self._next_progress:
             self._next_progress += self.progress_every
             self._progress()
+
+    def trace_records(self, tick: int) -> list[dict[str, Any]]:
+        """Every POSE_EVERY seconds, a `pose` record of the room for the monitor's view from above."""
+        if tick % max(1, round(POSE_EVERY / self.dt)):
+            return []
+        return [{"t": round(tick * self.dt, 9), "agent": "world", "path": [], "kind": "pose",
+                 **self.world.poses()}]
+
+    def label_sink(self) -> Labels:
+        """A trace sink that labels each robot in the video with its role and current behaviour."""
+        return Labels(self.world.labels)
 
     def failures(self, tick: int) -> Sequence[tuple[str, str]]:
         """The scenario's failures due now, and robots whose battery is empty."""

@@ -9,6 +9,7 @@ from pydantic import BaseModel, Tag, ValidationError
 from pydantic_core import ErrorDetails
 
 from hfsm.errors import Finding, UserError
+from hfsm.expr import reads
 from hfsm.names import NAME_PATTERN, did_you_mean
 from hfsm.yamlio import Document, Path_
 
@@ -85,8 +86,13 @@ def _message(model: type[BaseModel], path: Path_, err: ErrorDetails) -> str:
         return f"unknown key {where}" + (hint or f" (allowed: {', '.join(allowed)})")
     if kind == "missing":
         return f"missing required key '{err['loc'][-1]}'"
-    if last == "timer":
-        return f"'timer' must be a number of seconds > 0 or a '${{…}}' expression, not {_describe(value)}"
+    if last in _COUNTS:
+        return f"'{last}' must be {_COUNTS[last]} or a '${{…}}' expression, not {_describe(value)}" + _wrap(
+            value
+        )
+    if kind == "too_short":
+        least = (err.get("ctx") or {}).get("min_length", 1)
+        return f"{where} must have at least {least} {'entry' if least == 1 else 'entries'}, not none"
     if kind == "string_pattern_mismatch":
         return f"bad name {_describe(value)}: names match {NAME_PATTERN}"
     if kind in _TYPE_NAMES:
@@ -102,6 +108,19 @@ def _message(model: type[BaseModel], path: Path_, err: ErrorDetails) -> str:
         ]
         return f"{where}: {err['msg'].lower()}, not {_describe(value)}" + did_you_mean(str(value), expected)
     return f"{where}: {err['msg']}"
+
+
+_COUNTS = {
+    "timer": "a number of seconds > 0",
+    "times": "a whole number > 0",
+    "delay": "a number of seconds >= 0",
+}
+
+
+def _wrap(value: Any) -> str:
+    """The forgotten `${…}` (issue 13): say how to wrap text that reads as an expression."""
+    text = value.strip() if isinstance(value, str) else ""
+    return f"; write '${{{text}}}'" if "${" not in text and reads(text) else ""
 
 
 def _describe(value: Any) -> str:
@@ -123,7 +142,7 @@ def _allowed_keys(model: type[BaseModel], loc: tuple[int | str, ...]) -> list[st
     current: Any = model
     for part in loc:
         current = _step(current, part)
-    current = _strip(current)
+    current = _only_model(_strip(current)) or _strip(current)
     if isinstance(current, type) and issubclass(current, BaseModel):
         return sorted(f.alias or n for n, f in current.model_fields.items())
     return []
@@ -150,4 +169,16 @@ def _step(annotation: Any, part: int | str) -> Any:
             tags = [m for m in getattr(arg, "__metadata__", ()) if isinstance(m, Tag)]
             if tags and tags[0].tag == part:
                 return arg
+        model = _only_model(annotation)
+        if model is not None:  # `retry: Retry | None`: the keys are the model's
+            return _step(model, part)
     return annotation
+
+
+def _only_model(annotation: Any) -> type[BaseModel] | None:
+    if get_origin(annotation) not in (Union, types.UnionType):
+        return None
+    models = [
+        a for a in map(_strip, get_args(annotation)) if isinstance(a, type) and issubclass(a, BaseModel)
+    ]
+    return models[0] if len(models) == 1 else None

@@ -101,7 +101,7 @@ class JoinElse(Strict):
 
 def _join_kind(value: Any) -> str:
     if isinstance(value, dict):
-        return "join-else" if "else" in value else "join-rule"
+        return "join-else" if "else" in value and "when" not in value else "join-rule"
     return "join-else" if isinstance(value, JoinElse) else "join-rule"
 
 
@@ -146,7 +146,7 @@ class ElseBranch(Strict):
 
 def _branch_kind(value: Any) -> str:
     if isinstance(value, dict):
-        return "else-branch" if "else" in value else "if-branch"
+        return "else-branch" if "else" in value and "if" not in value else "if-branch"
     return "else-branch" if isinstance(value, ElseBranch) else "if-branch"
 
 

@@ -64,8 +64,7 @@ class World(Protocol):
     def failures(self, tick: int) -> Sequence[tuple[str, str]]:
         """The agents this world fails at the start of `tick`, each with the reason (SPEC 15).
 
-        A static world is asked only in the ticks the run does not skip: one that fails agents
-        on its own must not be static.
+        A static world is never asked: one that fails agents on its own must not be static.
         """
 
     def fail(self, agent: str) -> None:
@@ -108,6 +107,8 @@ class PerfectRadio:
 
     def next_delivery(self) -> int | None:
         """The next tick a message enters a mailbox (barrier notices never do)."""
+        if not self._in_flight:
+            return None
         ticks = [m.sent_tick for m in self._in_flight if m.name != NOTICE]
         return min(ticks) + 1 if ticks else None
 

@@ -118,6 +118,16 @@ class World:
     def dropped(self) -> bool:
         return self._lifting.dropped or self._scorer.dropped
 
+    def poses(self) -> dict[str, Any]:
+        """Where everything is (ground truth, for people watching: the monitor's room view), rounded
+        to the millimetre and the tenth of a milliradian."""
+        truth, room = self.truth, self.scenario.room
+        robots = {name: [round(v, 4) for v in truth.robot_pose(name)] for name in self.robots}
+        x, y, lift, yaw = truth.table_pose()
+        spec = truth.table.spec
+        table = [round(x, 4), round(y, 4), round(yaw, 4), spec.length, spec.width, round(lift, 4)]
+        return {"room": [room.width, room.depth], "robots": robots, "tables": [table]}
+
     def score(self) -> dict[str, Any]:
         """Ground-truth outcome; see sim.scorer.Scorer.score for the keys."""
         return self._scorer.score(self.time, dropped=self.dropped)

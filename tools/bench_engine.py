@@ -6,7 +6,8 @@ Usage: .venv/bin/python tools/bench_engine.py [--rounds 3] [--quick] [--libs hfs
 
 Workloads (see tools/bench/ and /work/shared/research/peer_bench.md): W1 flat two-state toggle,
 W2 three nested levels (3 exits and 3 entries a transition), W3 a 500-state chain (load from YAML,
-and run). Each library runs in a fresh process per round (`--worker LIB`), rounds rotate the order;
+and run), W4 a parallel state of four one-tick regions joined and re-entered (hfsm, transitions,
+sismic). Each library runs in a fresh process per round (`--worker LIB`), rounds rotate the order;
 a figure is the median over rounds of the best of 5 repeats after a warm-up. Prints a Markdown
 section and writes it between the bench_engine markers of docs/PERFORMANCE.md.
 Exits 1 when a correctness check failed.
@@ -37,7 +38,9 @@ from docsection import write_section  # noqa: E402
 
 DOC = ROOT / "docs" / "PERFORMANCE.md"
 LIBS = ["hfsm", "floor", "transitions", "python-statemachine", "sismic"]
-QUICK = Settings(repeats=3, budget=0.05, w1=20_000, w2=5_000, laps=4, trace_w1=5_000, trace_w2=1_000)
+QUICK = Settings(
+    repeats=3, budget=0.05, w1=20_000, w2=5_000, laps=4, trace_w1=5_000, trace_w2=1_000, w4=2_000
+)
 WORKER_TIMEOUT = 600
 
 
@@ -158,6 +161,11 @@ def _method(pooled: dict[str, rep.Pooled], settings: Settings, rounds: int) -> l
         "every record, so its figure includes the collector's passes over them and grows with n).",
         f"- Peers dispatch by name (`send`, `trigger`, `queue` + `execute_once`), sized so that a repeat "
         f"takes about {settings.budget:g} s, at most hfsm's n: {rep.sizes(pooled)}.",
+        f"- W4 (`tools/bench/w4.py`): one parallel state of 4 regions, each a one-tick wait, the join "
+        f"needing all four and re-entering the state; hfsm {settings.w4:,} joins, one a tick, whole "
+        "`run()` timed; transitions: a `HierarchicalMachine` parallel state, `tick` then `join` when its "
+        "`on_final` fired; sismic: orthogonal regions, `queue('tick')` + `execute()` (the tick, then an "
+        "eventless transition guarded by `active()` of the four final states).",
         "- W3 load: hfsm `load()` of its file; transitions and the floor: PyYAML `CSafeLoader` then the "
         "build; python-statemachine `statemachine.io.load` (pure-Python SafeLoader) and instantiation; "
         "sismic `import_from_yaml` (ruamel.yaml, pure) with its validation, `Interpreter` and first "

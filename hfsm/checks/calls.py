@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from hfsm.checks.context import CheckContext, call_states, parallel_states
 from hfsm.checks.forgotten import reads_like_expression, wrapped
+from hfsm.expr import ExprSyntaxError
 from hfsm.library import MachineFile
 from hfsm.model import CallState, Region
 from hfsm.names import RESERVED_MESSAGES, did_you_mean, is_name
@@ -16,7 +17,10 @@ Where = tuple[str | int, ...]
 def _is_expr(value: object) -> bool:
     if not isinstance(value, str):
         return False
-    parts = split(value) if "${" in value else [value]
+    try:
+        parts = split(value) if "${" in value else [value]
+    except ExprSyntaxError:
+        return True  # an unclosed `${`: the expressions check reports it (E314), not its type
     return len(parts) == 1 and isinstance(parts[0], tuple)
 
 

@@ -43,6 +43,8 @@ def check_expression(ctx: CheckContext, mf: MachineFile, where: Where, source: s
     except ExprSyntaxError as exc:
         ctx.error(mf, where, "E314", str(exc))
         return
+    if "state" not in source and "machine" not in source and "in" not in source:
+        return  # reads nothing live: no need to parse it again
     for name in sorted(reads(source)):
         root, attr = name.split(".", 1)
         if root == "state" and not place.state:
@@ -60,29 +62,29 @@ def check_expression(ctx: CheckContext, mf: MachineFile, where: Where, source: s
             ctx.error(mf, where, "E330", message)
 
 
-def expressions_in(value: Any) -> Iterator[str]:
-    """The `${…}` expressions of a literal tree, at any depth, never in keys (SPEC 7)."""
+def expressions_in(where: Where, value: Any) -> Iterator[tuple[Where, str]]:
+    """The `${…}` expressions of a literal tree with where each stands, at any depth, never in keys."""
     if isinstance(value, str):
         if "${" in value:
             for part in split(value):
                 if isinstance(part, tuple):
-                    yield part[0]
+                    yield where, part[0]
     elif isinstance(value, dict):
-        for item in value.values():
-            yield from expressions_in(item)
+        for key, item in value.items():
+            yield from expressions_in((*where, key), item)
     elif isinstance(value, list):
-        for item in value:
-            yield from expressions_in(item)
+        for i, item in enumerate(value):
+            yield from expressions_in((*where, i), item)
 
 
 def check_value(ctx: CheckContext, mf: MachineFile, where: Where, value: Any, place: Place) -> None:
     try:
-        found = list(expressions_in(value))
+        found = list(expressions_in(where, value))
     except ExprSyntaxError as exc:
         ctx.error(mf, where, "E314", str(exc))
         return
-    for source in found:
-        check_expression(ctx, mf, where, source, place)
+    for at, source in found:
+        check_expression(ctx, mf, at, source, place)
 
 
 def _watches(ctx: CheckContext, mf: MachineFile, where: Where, watches: list[Watch]) -> None:

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from hfsm.checks.context import CheckContext, call_states, parallel_states
-from hfsm.expr import reads
+from hfsm.expr import ExprSyntaxError, Names, compile_expr, reads
 from hfsm.library import MachineFile
 from hfsm.model import CallState, Region
 
@@ -15,9 +15,31 @@ Where = tuple[str | int, ...]
 _ROOTS = ("vars.", "params.", "agent.", "state.", "machine.", "in.")
 
 
+class _Every:
+    """Every name: whether a var or param exists is the business of other checks."""
+
+    def __contains__(self, name: object) -> bool:
+        return True
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(())
+
+    def __len__(self) -> int:
+        return 0
+
+
+_ANY_NAMES = Names(_Every(), _Every())
+
+
 def reads_like_expression(text: str) -> bool:
     """`vars.lap + 1`, `params.target`: parses as an expression and reads a name of SPEC 7."""
-    return "${" not in text and any(name.startswith(_ROOTS) for name in reads(text))
+    if "${" in text or "." not in text or not any(root in text for root in _ROOTS):
+        return False  # most strings: no need to parse them
+    try:
+        compile_expr(text, _ANY_NAMES)  # only what the language allows: `vars.n is big` is prose
+    except ExprSyntaxError:
+        return False
+    return any(name.startswith(_ROOTS) for name in reads(text))
 
 
 def wrapped(text: str) -> str:

@@ -5,9 +5,9 @@ from __future__ import annotations
 from hfsm import digraph
 from hfsm.checks.context import CheckContext
 from hfsm.checks.timing import guarded, leaves_in_time
-from hfsm.graph import arcs, state_graph
+from hfsm.graph import Arc, arcs, state_graph
 from hfsm.library import MachineFile
-from hfsm.model import ChoiceState
+from hfsm.model import ChoiceState, state_calls
 
 
 def _cyclic_components(g: digraph.MultiDiGraph) -> list[set[object]]:
@@ -21,9 +21,11 @@ def check_recursion(ctx: CheckContext) -> None:
         for caller in sorted(str(c) for c in component):
             for callee in sorted(str(c) for c in g.successors(caller) if c in component):
                 mf = ctx.machines[caller]
+                chain = " -> ".join(_cycle_through(g, caller, callee))
                 for state in g.edges[caller, callee]["states"]:
-                    chain = " -> ".join(_cycle_through(g, caller, callee))
-                    ctx.error(mf, ("states", state, "do"), "E312", f"'{caller}' calls itself: {chain}")
+                    for where, do in state_calls(state, mf.model.states[state]):
+                        if do == callee:
+                            ctx.error(mf, where, "E312", f"'{caller}' calls itself: {chain}")
 
 
 def _cycle_through(g: digraph.DiGraph, caller: str, callee: str) -> list[str]:
@@ -69,7 +71,14 @@ def check_state_graph(ctx: CheckContext, mf: MachineFile) -> None:
 def _graph(ctx: CheckContext, mf: MachineFile) -> digraph.MultiDiGraph:
     key = ("graph", mf.name)
     if key not in ctx.memo:
-        ctx.memo[key] = state_graph(mf.model, arcs(mf.model, ctx.specs))
+        ctx.memo[key] = state_graph(mf.model, _arcs(ctx, mf))
+    return ctx.memo[key]  # type: ignore[return-value]
+
+
+def _arcs(ctx: CheckContext, mf: MachineFile) -> list[Arc]:
+    key = ("arcs", mf.name)
+    if key not in ctx.memo:
+        ctx.memo[key] = arcs(mf.model, ctx.specs)
     return ctx.memo[key]  # type: ignore[return-value]
 
 
@@ -86,7 +95,7 @@ def endless_loops(ctx: CheckContext, mf: MachineFile) -> list[list[str]]:
     key = ("loops", mf.name)
     if key not in ctx.memo:
         m = mf.model
-        leaving = leaves_in_time(m, arcs(m, ctx.specs))
+        leaving = leaves_in_time(m, _arcs(ctx, mf))
         loops = []
         for component in _cyclic_components(_ordinary(_graph(ctx, mf), _reached(ctx, mf))):
             names = [n for n in m.states if ("state", n) in component]

@@ -80,7 +80,11 @@ def check_choice_else(ctx: CheckContext, mf: MachineFile) -> None:
                 ctx.error(mf, ("states", name, "choose", i), "E311", "'else' must be the last branch")
         if not isinstance(choice.choose[last], ElseBranch):
             ctx.error(
-                mf, ("states", name, "choose"), "E311", f"choice '{name}' must end with an 'else' branch"
+                mf,
+                ("states", name, "choose"),
+                "E311",
+                f"choice '{name}' must end with an 'else' branch",
+                key=True,
             )
 
 

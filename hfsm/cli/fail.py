@@ -5,10 +5,13 @@ from __future__ import annotations
 import argparse
 import math
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 from hfsm.errors import UsageError
 from hfsm.names import did_you_mean
-from hfsm.runtime.failing import Failure
+
+if TYPE_CHECKING:  # the interpreter is loaded only to run, not to check
+    from hfsm.runtime.failing import Failure
 
 
 def fail_arg(text: str) -> Failure:
@@ -22,6 +25,8 @@ def fail_arg(text: str) -> Failure:
         value = math.nan
     if not math.isfinite(value) or value < 0:
         raise argparse.ArgumentTypeError(f"{text!r}: SECONDS must be a number >= 0, not {seconds!r}")
+    from hfsm.runtime.failing import Failure
+
     return Failure(agent, value)
 
 

@@ -15,6 +15,7 @@ from hfsm.cli.params import parse_params
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import UsageError, UserError
 from hfsm.load import Loaded, load, worlds_needed
+from hfsm.monitor import live
 from hfsm.names import is_name
 from hfsm.registry import Registry
 from hfsm.world import WORLDS_GROUP, NullWorld, World, WorldFactory
@@ -60,6 +61,7 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     )
     for factory in factories.values():
         factory.add_arguments(p.add_argument_group(f"--world {factory.name}"))
+    live.add_arguments(p)
     return p
 
 
@@ -205,13 +207,16 @@ def _run(
     options = RunOptions(loaded.roots[0].name, agents, params, args.seed, args.max_time, args.fail)
     program = Program(loaded.machines, registry, args.dt)
     trace = TraceFile(trace_path) if trace_path else None
+    sink, monitor = live.sinks(args, trace, loaded, registry, loaded.roots[0].name, world)
     stop = guard.StopFlag()
     try:
         with guard.signals_flag(stop):
-            result = run(program, stoppable(world, stop), options, trace)
+            result = run(program, stoppable(world, stop), options, sink)
     finally:
-        if trace:
-            trace.close()
+        if sink:
+            sink.close()
+    if monitor is not None:
+        monitor.finish(args.monitor_hold)
     if trace and trace.failed and not result.error:
         result.error = trace.failed
     extra = world.report()

@@ -140,9 +140,12 @@ def _node_label(n: Node, link_ext: str) -> str:
 
 def _barrier(n: Node) -> str:
     """A thick bar (UML's fork and join) over the state's name and call: arcs arrive at the bar."""
+    return Html(_barrier_table(_label(n.title, n.lines, n.stats)))
+
+
+def _barrier_table(label: str) -> str:
     bar = f'<tr><td bgcolor="black" height="5" width="{BAR_WIDTH}" fixedsize="true"></td></tr>'
-    body = f"<tr><td>{_label(n.title, n.lines, n.stats)}</td></tr>"
-    return Html(f'<table border="0" cellspacing="0" cellpadding="2">{bar}{body}</table>')
+    return f'<table border="0" cellspacing="0" cellpadding="2">{bar}<tr><td>{label}</td></tr></table>'
 
 
 def _parallel(n: Node, link_ext: str) -> str:
@@ -156,8 +159,10 @@ def _parallel(n: Node, link_ext: str) -> str:
 
 def _lane(lane: Lane, first: bool, link_ext: str) -> str:
     sides = "T" if first else "TL"
-    href = f' href="{_h(lane.link)}.{link_ext}"' if lane.link else ""
+    href = f' href="{_h(lane.link)}.{link_ext}" title="{_h(lane.link)}"' if lane.link else ""
     label = _label(lane.title, lane.lines, lane.stats)
+    if lane.barrier:
+        label = _barrier_table(label)
     if lane.emphasis == "faded":
         label = f'<font color="{FADED}">{label}</font>'
     return f'<td border="1" style="dashed" sides="{sides}"{href}>{label}</td>'
@@ -171,7 +176,8 @@ def _label(title: str, lines: Sequence[str], stats: Sequence[str]) -> str:
 
 
 def _links(link: str, tooltip: str, link_ext: str) -> dict[str, str]:
-    attrs = {"tooltip": tooltip} if tooltip else {}
+    """A link's tooltip is the state's doc, else the machine linked (never the label's HTML)."""
+    attrs = {"tooltip": tooltip or link} if tooltip or link else {}
     if link:
         attrs["href"] = f"{link}.{link_ext}"
     return attrs

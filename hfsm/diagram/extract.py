@@ -282,5 +282,5 @@ def _overview_node(name: str, src: Sources, links: Collection[str]) -> Node:
     m = src.machines.get(name)
     if m is None:
         return Node(name, "primitive", name)
-    lines = (text.shorten(text.params(m.params), text.LINE_WIDTH),) if m.params else ()
+    lines = tuple(text.wrap(text.params(m.params), text.LINE_WIDTH).split("\n")) if m.params else ()
     return Node(name, "machine", name, lines, link=name if name in links else "", tooltip=m.doc or "")

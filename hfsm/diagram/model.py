@@ -54,6 +54,7 @@ class Lane:
     background: bool = False
     ref: Ref | None = None
     link: str = ""  # the figure of the region's machine
+    barrier: bool = False  # the region calls `barrier`: a synchronisation bar over its name
     stats: tuple[str, ...] = ()
     emphasis: Emphasis = "normal"
 

@@ -26,7 +26,14 @@ def _call(region: Region) -> tuple[str, ...]:
 
 def lanes(b: Builder, st: ParallelState, ref: Ref) -> tuple[Lane, ...]:
     return tuple(
-        Lane(name, _call(r), r.background, (*ref, name), r.do if r.do in b.links else "")
+        Lane(
+            name,
+            _call(r),
+            r.background,
+            (*ref, name),
+            r.do if r.do in b.links else "",
+            b.role(r.do) == "barrier",
+        )
         for name, r in st.parallel.items()
     )
 

@@ -102,7 +102,8 @@ def _by_default(source: str, params: Mapping[str, Param]) -> float | None:
 
 def wrap(text: str, width: int = CONDITION_WIDTH) -> str:
     """Text broken over lines (joined by newlines) of about `width` characters; nothing is cut."""
-    return "\n".join(textwrap.wrap(" ".join(text.split()), width, break_on_hyphens=False)) or text
+    flat = " ".join(text.split())
+    return "\n".join(textwrap.wrap(flat, width, break_long_words=False, break_on_hyphens=False)) or text
 
 
 def condition(order: int, text: str) -> str:

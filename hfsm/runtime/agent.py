@@ -60,45 +60,51 @@ class Frame:
     """One running machine: its memory, its current state, its timers, and what runs below it."""
 
     __slots__ = (
-        "_scope", "agent", "attempt", "below", "clock", "deadline", "entered", "machine", "params",
-        "retry_at", "started", "state", "state_deadline", "up", "vars",
+        "_prefix", "_scope", "agent", "attempt", "below", "deadline", "entered", "machine", "params",
+        "retry_at", "started", "state", "state_deadline", "up", "vars", "vars_shown",
     )  # fmt: skip
+    entered: int  # the tick its current state was entered (set on entering it, as the two below)
+    state_deadline: int | None
+    attempt: int  # the call of that state's behaviour, from 1 (SPEC 13)
 
     def __init__(
-        self, machine: RMachine, params: dict[str, Any], agent: Agent, clock: Clock, up: Frame | Region | None
+        self, machine: RMachine, params: dict[str, Any], agent: Agent, up: Frame | Region | None
     ) -> None:
         self.machine = machine
         self.params = params
         self.vars = machine.fresh_vars() if machine.var_init else {}
+        self.vars_shown = not self.vars  # False: the trace has not shown the vars as they are now
         self.agent = agent
-        self.clock = clock
         self.up = up
         self._scope: Scope | None = None
+        self._prefix: tuple[str, ...] | None = None
         self.state: RState = machine.initial  # type: ignore[assignment]
         self.deadline: int | None = None  # the machine timer's tick
-        self.state_deadline: int | None = None
         self.retry_at: int | None = None  # the tick a retry's delay ends in
-        self.started = clock.tick
-        self.entered = 0
-        self.attempt = 1
+        self.started = agent.clock.tick
         self.below: Any = None  # Activity | Frame | list[Region] | None
 
     @property
     def scope(self) -> Scope:
         """What expressions read; made on first use, since most frames never evaluate one."""
         if self._scope is None:
-            live = FrameLive(self, self.clock, self.agent.inputs)
+            live = FrameLive(self, self.agent.clock, self.agent.inputs)
             self._scope = Scope(self.params, self.vars, self.agent.name, live)
         return self._scope
 
     def prefix(self) -> list[str]:
         """The path of the state or region that runs this machine."""
-        up = self.up
-        return [self.agent.top] if up is None else up.path()
+        return list(self._prefix or self._own_prefix())
 
     def path(self) -> list[str]:
         """The path of this machine's current state."""
-        return [*self.prefix(), self.state.name]
+        return [*(self._prefix or self._own_prefix()), self.state.name]
+
+    def _own_prefix(self) -> tuple[str, ...]:
+        """Made once: what runs a machine stays where it is while the machine runs (trace records)."""
+        up = self.up
+        self._prefix = (self.agent.top,) if up is None else tuple(up.path())
+        return self._prefix
 
 
 class Region:
@@ -147,6 +153,14 @@ class AgentResult:
     failed: str | None = None  # the reason, when the agent failed (SPEC 15)
 
 
+class _NoClock:
+    tick = 0
+    dt = 0.0
+
+
+_NO_CLOCK: Clock = _NoClock()
+
+
 class Agent:
     def __init__(self, name: str, top: str, robot: Any, seed: int, world: World) -> None:
         self.name = name
@@ -154,6 +168,7 @@ class Agent:
         self.robot = robot
         self.rng = random.Random(f"{seed}:{name}")
         self.inputs = Inputs(world, name)
+        self.clock: Clock = _NO_CLOCK  # the engine's, once it runs
         self.root: Frame | None = None
         self.mailbox: list[Message] = []
         self.stats: dict[str, BehaviourStats] = {}

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from hfsm.expr import ExprValueError
 from hfsm.runtime.agent import Event, Frame, Region
 from hfsm.runtime.calls import Calls
@@ -72,9 +74,13 @@ class Arcs(Calls):
                 for var, output in state.save:
                     if output in event.outputs:
                         frame.vars[var] = event.outputs[output]
+                        frame.vars_shown = False
         if self.trace is not None:
             shown = target.name if target.__class__ is RState else target
-            self.emit(frame.agent, frame.path(), "event", event=name, target=shown)
+            extra = self._vars_of(frame)
+            if state.do == "barrier" and event.outputs:
+                extra["arrived"] = event.outputs.get("arrived")  # who the barrier heard (the monitor)
+            self.emit(frame.agent, frame.path(), "event", event=name, target=shown, **extra)
         self._leave(frame, name)
         return target
 
@@ -84,23 +90,23 @@ class Arcs(Calls):
         frame.entered = self.tick
         frame.state_deadline = None
         frame.attempt = 1
+        bad_timer = None if state.timer is None else self._start_timer(frame, state)
         if self.trace is not None:
-            self.emit(agent, frame.path(), "enter", **({"do": state.do} if state.do else {}))
+            self.emit(agent, frame.path(), "enter", **self._entered(frame, state))
         agent.entries += 1
         if agent.entries > MAX_ENTRIES:
             path = "/".join(frame.path())
             raise FatalError(agent.name, f"{path}: more than {MAX_ENTRIES} state entries in one tick")
         if state.is_choice:
             return self._choose(frame, state)
-        if state.timer is not None:
-            ticks = self._ticks(state.timer, frame)
-            if ticks.__class__ is Event:
-                return ticks
-            frame.state_deadline = self.tick + ticks  # type: ignore[operator]
+        if bad_timer is not None:
+            return bad_timer
         if agent.mailbox and state.msg_arcs:
             message = agent.take_message(state.msg_arcs)
             if message is not None:
                 return Event(message.name, message=message)
+        if state.plain:
+            return self._start_call(frame, state, frame)
         if state.watches:
             event = self._watch(frame, state)
             if event is not None:
@@ -111,6 +117,33 @@ class Arcs(Calls):
         if event is not None and state.retry_on:
             return self._retry(frame, event)
         return event
+
+    def _start_timer(self, frame: Frame, state: RState) -> Event | None:
+        """The state's timer set (before its `enter` is written, which shows when it fires); or the
+        error its expression gave, taken once the state is entered."""
+        ticks = self._ticks(state.timer, frame)
+        if ticks.__class__ is Event:
+            return ticks
+        frame.state_deadline = self.tick + ticks  # type: ignore[operator]
+        return None
+
+    def _entered(self, frame: Frame, state: RState) -> dict[str, Any]:
+        """What an `enter` record tells beside its path: the callee, when the state's and the
+        machine's timers fire (seconds), and the machine's vars when the trace has not shown them."""
+        extra: dict[str, Any] = {"do": state.do} if state.do else {}
+        if frame.state_deadline is not None:
+            extra["deadline"] = round(frame.state_deadline * self.dt, 9)
+        if frame.deadline is not None:
+            extra["machine_deadline"] = round(frame.deadline * self.dt, 9)
+        extra.update(self._vars_of(frame))
+        return extra
+
+    def _vars_of(self, frame: Frame) -> dict[str, Any]:
+        """`{"vars": {...}}` once after the machine's vars change (a trace shows values on change)."""
+        if frame.vars_shown:
+            return {}
+        frame.vars_shown = True
+        return {"vars": dict(frame.vars)}
 
     def _choose(self, frame: Frame, state: RState) -> Event:
         for condition, text, target in state.branches:

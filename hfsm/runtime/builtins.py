@@ -83,6 +83,7 @@ def start_send(
 
 def start_set(host: Host, agent: Agent, frame: Frame, params: dict[str, Any], where: Frame | Region) -> Event:
     frame.vars.update(params)
+    frame.vars_shown = False
     return DONE
 
 

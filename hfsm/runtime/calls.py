@@ -45,9 +45,14 @@ class Calls(Cancelling):
         kind = callee.kind
         agent = frame.agent
         if kind == "machine":
-            child = Frame(callee.callee, params, agent, self, where)  # type: ignore[arg-type]
-            where.below = child
-            ended = self._begin_machine(child)
+            machine: RMachine = callee.callee  # type: ignore[assignment]
+            child = where.below = Frame(machine, params, agent, where)  # type: ignore[arg-type]
+            if machine.timer is None:  # _begin_machine's work, without its call
+                ended = self._enter(child, machine.initial)  # type: ignore[arg-type]
+                if ended is not None:
+                    ended = self._run(child, ended)
+            else:
+                ended = self._begin_machine(child)
             if ended is not None:
                 where.below = None
             return ended
@@ -134,6 +139,7 @@ class Calls(Cancelling):
             for var, output in frame.state.save:
                 if output in event.outputs:
                     frame.vars[var] = event.outputs[output]
+                    frame.vars_shown = False
 
     def _count_of(self, times: Any, frame: Frame, what: str) -> int | Event:
         if times.__class__ is int:

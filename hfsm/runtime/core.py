@@ -31,6 +31,8 @@ class FatalError(Exception):
 class Core:
     def __init__(self, agents: list[Agent], world: World, dt: float, trace: TraceSink | None) -> None:
         self.agents = agents
+        for agent in agents:
+            agent.clock = self
         self.by_name = {a.name: a for a in agents}
         self.world = world
         self.dt = dt

@@ -15,6 +15,7 @@ from hfsm.runtime.agent import Agent, Event, Frame, Region, leaves
 from hfsm.runtime.core import FatalError
 from hfsm.runtime.parallel import Parallel
 from hfsm.runtime.program import RMachine
+from hfsm.runtime.states import RState
 from hfsm.world import NOTICE
 
 __all__ = ["Engine", "FatalError"]
@@ -24,7 +25,7 @@ class Engine(Parallel):
     def start(self, agent: Agent, top: RMachine, params: dict[str, Any]) -> None:
         agent.started = True
         self.emit(agent, [agent.top], "enter")
-        root = agent.root = Frame(top, params, agent, self, None)
+        root = agent.root = Frame(top, params, agent, None)
         ended = self._begin_machine(root)
         if ended is not None:
             self._end_agent(agent, ended)
@@ -41,14 +42,9 @@ class Engine(Parallel):
                 self._settle(frame, self._cancelled(frame, "timeout", Event("timeout")))
                 return
             state = frame.state
-            agent = frame.agent
-            if agent.mailbox and state.msg_arcs:
-                message = agent.take_message(state.msg_arcs)
-                if message is not None:
-                    event = Event(message.name, message=message)
-                    self._settle(frame, self._cancelled(frame, message.name, event))
-                    return
-            if (state.watches or frame.retry_at is not None) and self._watched(frame, k):
+            if frame.agent.mailbox and state.msg_arcs and self._message_arc(frame, state):
+                return
+            if state.stepped and self._watched(frame, k):
                 return
             below = frame.below
             cls = below.__class__
@@ -63,9 +59,20 @@ class Engine(Parallel):
                     frame.below = None
                     if state.retry_on:
                         self._after_call(frame, ended)
-                    else:
-                        self._settle(frame, ended)
+                    else:  # _settle's work, without its call
+                        ended = self._run(frame, ended)
+                        if ended is not None:
+                            self._pass_up(frame, ended)
             return
+
+    def _message_arc(self, frame: Frame, state: RState) -> bool:
+        """The earliest message the state maps takes its arc: whether one did."""
+        message = frame.agent.take_message(state.msg_arcs)
+        if message is None:
+            return False
+        event = Event(message.name, message=message)
+        self._settle(frame, self._cancelled(frame, message.name, event))
+        return True
 
     def _watched(self, frame: Frame, k: int) -> bool:
         """The state's watches, then the end of a retry's delay: whether either acted."""

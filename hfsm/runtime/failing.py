@@ -33,24 +33,27 @@ class Failures:
 
     def __init__(self, engine: Engine, scheduled: Sequence[Failure]) -> None:
         self.engine = engine
+        unknown = sorted({f.agent for f in scheduled} - set(engine.by_name))
+        if unknown:
+            raise ValueError(f"no agent named {', '.join(unknown)} to fail")
         self.due = sorted(
             ((span_ticks(f.seconds, engine.dt), f.agent, f.reason) for f in scheduled),
             key=lambda due: due[0],
         )
 
-    def next_tick(self) -> int | None:
-        """The next tick after this one in which a scheduled failure happens."""
-        now = self.engine.tick
-        return next((tick for tick, _, _ in self.due if tick > now), None)
-
     def apply(self, tick: int) -> None:
-        """Fail the agents due at the start of `tick`, before messages enter the mailboxes."""
+        """Fail the agents due at the start of `tick`, before messages enter the mailboxes.
+
+        The run calls it only while failures are scheduled or the world is not static: a static
+        world fails no agent on its own.
+        """
         engine = self.engine
-        for due_tick, name, reason in self.due:
-            if due_tick == tick:
-                fail(engine, engine.by_name[name], reason)
-        for name, reason in engine.world.failures(tick):
+        while self.due and self.due[0][0] <= tick:
+            _, name, reason = self.due.pop(0)
             fail(engine, engine.by_name[name], reason)
+        if not engine.world.static:
+            for name, reason in engine.world.failures(tick):
+                fail(engine, engine.by_name[name], reason)
 
 
 def fail(engine: Engine, agent: Agent, reason: str) -> None:

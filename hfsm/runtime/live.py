@@ -60,10 +60,11 @@ class FrameLive:
         self.inputs = inputs
 
     def state_time(self) -> float:
-        return seconds(self.clock.tick - self.frame.entered, self.clock.dt)
+        entered: int = getattr(self.frame, "entered", self.clock.tick)  # unset before its first state
+        return seconds(self.clock.tick - entered, self.clock.dt)
 
     def state_attempt(self) -> int:
-        attempt: int = self.frame.attempt
+        attempt: int = getattr(self.frame, "attempt", 1)
         return attempt
 
     def machine_time(self) -> float:

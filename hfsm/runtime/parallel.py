@@ -60,6 +60,7 @@ class Parallel(Arcs):
             for var, output in region.spec.save:
                 if output in event.outputs:
                     owner_vars[var] = event.outputs[output]
+                    region.owner.vars_shown = False
         self._region_left(region, event.name)
 
     def _region_failed(self, frame: Frame, event: Event) -> Event:

@@ -109,8 +109,10 @@ class Program:
                 rs.save = tuple(state.save.items())
                 if state.retry is not None:
                     self._retry(rs, state.retry, Names(m.params, None))
+                rs.plain = not rs.watches and not rs.retry_on
             else:
                 self._parallel(rs, state, names, target)
+            rs.stepped = bool(rs.watches or rs.retry_on)
 
     def _callee(self, callee: Callee, call: CallState | Region, names: Names) -> None:
         callee.do = call.do

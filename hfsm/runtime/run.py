@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -58,6 +58,7 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
     last = span_ticks(options.max_time, program.dt)
     top = program.machines[options.top]
     failures = Failures(engine, options.failures)
+    world_records = getattr(world, "trace_records", None)  # a world may add records (robots' poses)
     try:
         failures.apply(0)
         for agent in agents:
@@ -73,8 +74,10 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
                 return f"stopped at --max-time {options.max_time:g} s: " + _where(agents), ""
             if not world.static:
                 world.advance(engine.tick)
+                _world_records(engine, world_records, following)
             engine.tick = following
-            failures.apply(following)
+            if failures.due or not world.static:
+                failures.apply(following)
             engine.deliver(world.collect(following))
             for agent in agents:
                 if agent.result is None:
@@ -87,6 +90,15 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
     return None, ""
 
 
+WorldRecords = Callable[[int], list[dict[str, Any]]]
+
+
+def _world_records(engine: Engine, records: WorldRecords | None, tick: int) -> None:
+    if records is not None and engine.trace is not None:
+        for record in records(tick):
+            engine.trace.write(record)
+
+
 def _next_tick(engine: Engine, failures: Failures) -> int | None:
     """In a static world, the next tick in which anything can happen; None when nothing can."""
     now = engine.tick
@@ -96,12 +108,21 @@ def _next_tick(engine: Engine, failures: Failures) -> int | None:
     for agent in engine.agents:
         if agent.result is not None or agent.root is None:
             continue
-        best = _wake(agent.root, now, best)
+        root = agent.root
+        below = root.below
+        if below.__class__ is Frame or below.__class__ is list or below is None or root.state.timed:
+            best = _wake(root, now, best)
+        else:  # one machine running one behaviour: the common case, without a call
+            for deadline in (root.deadline, root.state_deadline, root.retry_at, below.deadline):
+                if deadline is not None and now < deadline < best:
+                    best = deadline
         if best == now + 1:
             break
     if best == sys.maxsize:
         return None  # a failure to come is no agent advancing: blocked forever now
-    return min(best, failures.next_tick() or sys.maxsize)
+    if failures.due:
+        best = min(best, failures.due[0][0])
+    return best
 
 
 def _wake(frame: Frame, now: int, best: int) -> int:

@@ -61,8 +61,24 @@ class Watch:
 
 class RState(Callee):
     __slots__ = (
-        "arcs", "awaited", "branches", "error_target", "is_choice", "is_parallel", "join", "machine",
-        "msg_arcs", "name", "regions", "retry_delay", "retry_on", "retry_times", "timed", "timer",
+        "arcs",
+        "awaited",
+        "branches",
+        "error_target",
+        "is_choice",
+        "is_parallel",
+        "join",
+        "machine",
+        "msg_arcs",
+        "name",
+        "plain",
+        "regions",
+        "retry_delay",
+        "retry_on",
+        "retry_times",
+        "stepped",
+        "timed",
+        "timer",
         "watches",
     )  # fmt: skip
 
@@ -85,6 +101,8 @@ class RState(Callee):
         self.regions: tuple[RRegion, ...] = ()
         self.awaited: tuple[int, ...] = ()  # indexes of the regions that are not background
         self.join: tuple[JoinRule, ...] = ()
+        self.plain = False  # a call state without watches or retry: entered the quick way
+        self.stepped = False  # it has watches or a retry: its own level does more in each tick
 
 
 class RMachine:

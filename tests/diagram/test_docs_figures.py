@@ -13,7 +13,11 @@ from .helpers_diagram import ROOT
 
 FIGURES = ROOT / "docs" / "figures"
 # (folder of machine files, folder of their committed figures, extra hfsm-graph arguments): as in the Makefile
-SETS = [("machines", FIGURES, []), ("examples", FIGURES / "examples", ["--no-legend"])]
+SETS = [
+    ("machines", FIGURES, []),
+    ("examples", FIGURES / "examples", ["--no-legend"]),
+    ("tests/diagram/data/search.yaml", FIGURES / "depth", ["--depth", "2", "--no-legend", "--no-overview"]),
+]
 
 
 @pytest.mark.parametrize(("machines", "figures", "extra"), SETS, ids=[s[0] for s in SETS])

@@ -75,3 +75,10 @@ def test_links_point_to_figures_of_the_chosen_format() -> None:
     fig = machine_figure("relay", src, links={"move_table"})
     assert 'href="move_table.svg"' in to_dot(fig)
     assert 'href="move_table.pdf"' in to_dot(fig, link_ext="pdf")
+
+
+def test_a_linked_state_without_a_doc_shows_its_machine_as_tooltip_not_html() -> None:
+    src = data_sources()
+    dot = to_dot(machine_figure("relay", src, links={"move_table"}))
+    line = next(line for line in dot.splitlines() if 'href="move_table.svg"' in line)
+    assert 'tooltip="move_table"' in line

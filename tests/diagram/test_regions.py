@@ -88,17 +88,31 @@ def test_depth_draws_each_region_in_a_dashed_box_side_by_side() -> None:
     assert 'lhead="cluster_search"' in to_dot(fig) and 'style="dashed"' in to_dot(fig)
 
 
-def test_a_barrier_is_a_synchronisation_bar() -> None:
+def test_a_barrier_is_a_synchronisation_bar_in_a_state_or_a_region() -> None:
+    barrier = {"do": "barrier", "with": {"name": "lift"}}
     m = Machine.model_validate(
         {
             "outcomes": ["done"],
-            "states": {"sync": {"do": "barrier", "with": {"name": "lift"}, "on": {"passed": "done"}}},
+            "states": {
+                "sync": {**barrier, "on": {"passed": "both"}},
+                "both": {
+                    "parallel": {
+                        "meet": barrier,
+                        "idle": {"do": "barrier", "with": {"name": "b"}, "background": True},
+                    },
+                    "join": [{"when": {"meet": "passed"}, "then": "done"}],
+                },
+            },
         }
     )
     src = Sources({"team": m}, {"barrier": BehaviourSpec("barrier", "builtin", {}, ("passed",))})
     fig = machine_figure("team", src)
     assert _item(fig, "sync").role == "barrier"  # type: ignore[union-attr]
-    assert 'bgcolor="black" height="5"' in to_dot(fig)
+    both = _item(fig, "both")
+    assert isinstance(both, Node) and [lane.barrier for lane in both.lanes] == [True, True]
+    assert to_dot(fig).count('bgcolor="black" height="5"') == 3
+    deep = machine_figure("team", src, depth=1)
+    assert _item(deep, "both/meet").role == "barrier"  # type: ignore[union-attr]
 
 
 def _record(t: float, path: list[str], kind: str, **extra: Any) -> dict[str, Any]:
@@ -162,4 +176,4 @@ def test_each_lane_links_to_its_machines_figure() -> None:
     fig = machine_figure("search", data_sources(), links={"move_table", "search"})
     node = _item(fig, "search")
     assert isinstance(node, Node) and [lane.link for lane in node.lanes] == ["move_table", "", ""]
-    assert 'sides="T" href="move_table.svg"' in to_dot(fig)
+    assert 'sides="T" href="move_table.svg" title="move_table"' in to_dot(fig)

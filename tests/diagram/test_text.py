@@ -77,3 +77,14 @@ def test_paragraphs_end_with_a_sentence() -> None:
 @given(st.text(), st.integers(min_value=2, max_value=80))
 def test_shorten_never_exceeds_its_width(s: str, width: int) -> None:
     assert len(text.shorten(s, width)) <= width
+
+
+@given(
+    st.text(alphabet=st.characters(blacklist_categories=("Cs",)), min_size=1),
+    st.integers(min_value=5, max_value=60),
+)
+def test_wrap_keeps_every_word(s: str, width: int) -> None:
+    flat = " ".join(s.split())
+    wrapped = text.wrap(s, width)
+    assert wrapped.replace("\n", " ") == (flat or s)
+    assert text.ELLIPSIS not in wrapped or text.ELLIPSIS in s

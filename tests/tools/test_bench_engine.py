@@ -33,6 +33,7 @@ def test_hfsm_workloads_run_and_pass_their_checks(bench: HfsmBench) -> None:
         bench.chain_run(2),
         bench.chain_load(),
         bench.chain_compile(),
+        bench.parallel(12),
     ]
     for work in works:
         timing = measure(work, repeats=1, budget=0.0)
@@ -47,6 +48,15 @@ def test_checks_catch_a_wrong_count(bench: HfsmBench, kind: str, trace: str) -> 
     work.execute(handle)
     with pytest.raises(CheckFailed):
         work.check(handle, 13)
+
+
+def test_w4_check_catches_a_wrong_count(bench: HfsmBench) -> None:
+    work = bench.parallel(12)
+    handle = work.prepare(12)
+    work.execute(handle)
+    work.check(handle, 12)
+    with pytest.raises(CheckFailed):
+        work.check(handle, 11)
 
 
 def test_calls_per_transition_are_counted(bench: HfsmBench) -> None:

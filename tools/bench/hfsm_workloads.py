@@ -4,6 +4,7 @@
   after exactly n transitions (one a tick).
 - W2 nested: top `a`/`b` each call `bench_w2_mid`, which calls `bench_w2_leaf`, which waits one tick
   and ends; every tick leaves three states (leaf, mid, top) and enters three.
+- W4 parallel: see bench/w4.py; a unit is one join of four regions.
 - W3 chain: `s0 -> s1 -> ... -> s{k-1} -> done`, each a one-tick `wait`; timed: `hfsm.load.load`
   (read, check), `Program` (compile), and running it.
 
@@ -19,6 +20,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from bench.harness import Workload, expect
+from bench.w4 import HFSM as W4
+from bench.w4 import REGIONS
 from hfsm.load import Loaded, load
 from hfsm.registry import Registry
 from hfsm.runtime.program import Program, span_ticks
@@ -147,6 +150,12 @@ def check_nested(h: Handle, n: int) -> None:
         expect(kinds == want_kinds, f"W2 trace records {dict(kinds)}, expected {want_kinds}")
 
 
+def check_parallel(h: Handle, n: int) -> None:
+    events = _ended(h, "timeout")
+    want = {"wait": {"done": REGIONS * n, "timeout": REGIONS}}
+    expect(events == want, f"W4 counts {events}, expected {REGIONS} region ends in each of {n} joins")
+
+
 class HfsmBench:
     """Writes the machine files into `folder` and builds the workloads over them."""
 
@@ -159,11 +168,12 @@ class HfsmBench:
             "bench_w2_mid": W2_MID,
             "bench_w2_leaf": W2_LEAF,
             "bench_w3": chain_yaml(chain_states),
+            "bench_w4": W4,
         }
         for name, text in texts.items():
             (folder / f"{name}.yaml").write_text(text, encoding="utf-8")
         self.registry = Registry()
-        self.loaded = {top: self._load(top) for top in ("bench_w1", "bench_w2", "bench_w3")}
+        self.loaded = {top: self._load(top) for top in ("bench_w1", "bench_w2", "bench_w3", "bench_w4")}
 
     def _load(self, top: str) -> Loaded:
         loaded = load([self.folder / f"{top}.yaml"], registry=self.registry)
@@ -183,6 +193,11 @@ class HfsmBench:
     def nested(self, n: int, trace: str = "none") -> Workload[Handle]:
         return Workload(
             lambda k: self._handle("bench_w2", {"limit": limit_for(k)}, trace), _execute, check_nested, n
+        )
+
+    def parallel(self, n: int) -> Workload[Handle]:
+        return Workload(
+            lambda k: self._handle("bench_w4", {"limit": limit_for(k)}, "none"), _execute, check_parallel, n
         )
 
     def chain_run(self, laps: int) -> Workload[Handle]:

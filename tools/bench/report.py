@@ -14,23 +14,28 @@ TARGET_TEXT = {
     "w3_load": "W3 load and check of the 500-state chain ≤ 100 ms",
 }
 ROWS = [  # (label, lib, {column: cell})
-    ("hfsm", "hfsm", {"w1": "w1", "w2": "w2", "w3_load": "w3_load", "w3_chain": "w3_chain"}),
+    ("hfsm", "hfsm", {"w1": "w1", "w2": "w2", "w3_load": "w3_load", "w3_chain": "w3_chain", "w4": "w4"}),
     ("hfsm, trace on: ListTrace", "hfsm", {"w1": "w1_list", "w2": "w2_list"}),
     ("hfsm, trace on: JSONL to /dev/null", "hfsm", {"w1": "w1_jsonl", "w2": "w2_jsonl"}),
     ("floor (dict table)", "floor", {"w1": "w1", "w2": "w2", "w3_load": "w3_load", "w3_chain": "w3_chain"}),
-    ("transitions", "transitions", {"w1": "w1", "w2": "w2", "w3_load": "w3_load", "w3_chain": "w3_chain"}),
+    (
+        "transitions",
+        "transitions",
+        {"w1": "w1", "w2": "w2", "w3_load": "w3_load", "w3_chain": "w3_chain", "w4": "w4"},
+    ),
     (
         "python-statemachine",
         "python-statemachine",
         {"w1": "w1", "w2": "w2", "w3_load": "w3_load", "w3_chain": "w3_chain"},
     ),
-    ("sismic", "sismic", {"w1": "w1", "w2": "w2", "w3_load": "w3_load", "w3_chain": "w3_chain"}),
+    ("sismic", "sismic", {"w1": "w1", "w2": "w2", "w3_load": "w3_load", "w3_chain": "w3_chain", "w4": "w4"}),
 ]
 COLUMNS = {
     "w1": "W1 flat µs/transition",
     "w2": "W2 nested µs/transition",
     "w3_load": "W3 load 500-state YAML ms",
     "w3_chain": "W3 chain µs/transition",
+    "w4": "W4 parallel µs/join",
 }
 
 
@@ -134,7 +139,7 @@ def ratios(pooled: dict[str, Pooled]) -> list[str]:
 
 
 def calls_table(pooled: dict[str, Pooled]) -> list[str]:
-    heads = {"w1": "W1", "w2": "W2", "w3_chain": "W3 chain"}
+    heads = {"w1": "W1", "w2": "W2", "w3_chain": "W3 chain", "w4": "W4 (a join)"}
     lines = ["| library | " + " | ".join(heads.values()) + " |", "|---|" + "---:|" * len(heads)]
     for label, lib, _ in ROWS:
         p = pooled.get(lib)

@@ -14,6 +14,8 @@ from typing import Any
 
 from bench.harness import Calls, Workload, count_calls, expect, measure
 from bench.peers import ADAPTERS, IMPORTS, Adapter, Built, Step, chain_spec, counts, flat_spec, nested_spec
+from bench.w4 import PEERS as W4_PEERS
+from bench.w4 import peer_workload as w4_workload
 
 CHAIN_STATES = 500
 
@@ -29,6 +31,7 @@ class Settings:
     w1: int = 100_000
     w2: int = 20_000
     laps: int = 20  # W3 chain runs (500 transitions each)
+    w4: int = 20_000  # joins
     trace_w1: int = 20_000
     trace_w2: int = 5_000
     calls: bool = True
@@ -87,6 +90,7 @@ def run_hfsm(settings: Settings) -> Report:
             "w3_load": bench.chain_load(),
             "w3_compile": bench.chain_compile(),
             "w3_chain": bench.chain_run(settings.laps),
+            "w4": bench.parallel(settings.w4),
             "w1_list": bench.flat(settings.trace_w1, "list"),
             "w2_list": bench.nested(settings.trace_w2, "list"),
             "w1_jsonl": bench.flat(settings.trace_w1, "jsonl"),
@@ -97,6 +101,7 @@ def run_hfsm(settings: Settings) -> Report:
         if settings.calls:
             _calls(report, "w1", lambda: count_calls(bench.flat(1), 1000, 2000))
             _calls(report, "w2", lambda: count_calls(bench.nested(1), 1000, 2000))
+            _calls(report, "w4", lambda: count_calls(bench.parallel(1), 1000, 2000))
             _calls(
                 report, "w3_chain", lambda: count_calls(bench.chain_run(1), CHAIN_STATES, 2 * CHAIN_STATES)
             )
@@ -207,10 +212,15 @@ def run_peer(lib: str, settings: Settings) -> Report:
         report.skipped = f"not importable ({exc}); pip install -r tools/bench-requirements.txt"
         return report
     workloads = _peer_workloads(adapter, settings)
+    if lib in W4_PEERS:
+        workloads["w4"] = w4_workload(lib, settings.w4)
     for cell, work in workloads.items():
         _cell(report, cell, work, settings, settings.budget)
     if settings.calls:
-        for cell, (small, large) in {"w1": (200, 1200), "w2": (200, 1200), "w3_chain": (500, 1000)}.items():
+        sizes = {"w1": (200, 1200), "w2": (200, 1200), "w3_chain": (500, 1000), "w4": (200, 1200)}
+        for cell, (small, large) in sizes.items():
+            if cell not in workloads:
+                continue
             work = workloads[cell]
             _calls(report, cell, partial(count_calls, work, small, large))
     return report

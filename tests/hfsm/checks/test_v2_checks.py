@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from pathlib import Path
 
+from hfsm.checks.forgotten import reads_like_expression
 from hfsm.errors import UserError
 from hfsm.load import load
 from hfsm.registry import Registry
@@ -175,7 +176,9 @@ def test_regions_that_can_wait_forever_or_share_a_message(machine: Machine) -> N
         "above it has a timer; put a timer on 'both'",
         "top:7:7 W404 regions 'a' and 'b' both consume message 'go': 'a' takes it first and 'b' may never see it",
     ]
-    timed = machine("timed", body.format("watch:\n          - {if: 'machine.time > 60', then: done}\n        "))
+    timed = machine(
+        "timed", body.format("watch:\n          - {if: 'machine.time > 60', then: done}\n        ")
+    )
     assert [f.split()[1] for f in found(timed)] == ["W404"]
 
 
@@ -203,3 +206,9 @@ def test_a_forgotten_wrap(machine: Machine) -> None:
         "f:8:47 W405 'vars.lap' reads like an expression but is taken as text; write '${vars.lap}'",
         "f:8:61 W405 'agent.id' reads like an expression but is taken as text; write '${agent.id}'",
     ]
+
+
+def test_prose_is_not_taken_for_a_forgotten_wrap() -> None:
+    assert reads_like_expression("vars.lap + 1") and reads_like_expression("in.battery < 0.2")
+    for text in ("vars.n is big", "found vars.n corners", "lap ${vars.lap}", "go", "3.5"):
+        assert not reads_like_expression(text), text

@@ -98,7 +98,7 @@ def test_spec_example_first_rule_wins_and_the_rest_is_cancelled(machine: Machine
     join = [r for r in kinds(records, "event") if r["path"] == ["top", "search"]]
     assert join == [
         {"t": 0.5, "agent": "robot", "path": ["top", "search"], "kind": "event", "event": "detect=found",
-         "target": "approach_victim"}
+         "target": "approach_victim", "vars": {"pose": [1.0, 2.0]}}  # the region's save, shown on change
     ]  # fmt: skip
 
 

@@ -226,3 +226,27 @@ def test_time_since_entry_is_rounded(machine: Machine) -> None:
     """,
     )
     assert execute(path)[0].agents["robot"].outputs == {"t": 0.3}
+
+
+def test_a_yaml_literal_is_a_condition(machine: Machine) -> None:
+    path = machine(
+        "m",
+        """
+        outcomes: [a, b, c, d, e]
+        states:
+          pick:
+            choose:
+              - if: false
+                then: a
+              - if: null
+                then: b
+              - if: 0
+                then: c
+              - if: 2.5
+                then: d
+              - else: e
+    """,
+    )
+    result, records = execute(path)
+    assert result.agents["robot"].outcome == "d"
+    assert events(records) == [(0.0, "pick", "2.5")]

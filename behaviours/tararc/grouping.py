@@ -1,0 +1,130 @@
+"""Grouping and agent election (TARARC section 4.3, steps 2-4), deterministic.
+
+Robots are named by id; every tie is broken by id (the smaller string wins) and the input order
+never matters, so every robot computes the same groups from the same broadcasts.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass
+
+Pair = tuple[str, str]
+Relevance = Mapping[Pair, float]
+"""R_ij by `pair(i, j)`; a missing pair has relevance 0 (never worked together)."""
+
+BeliefOf = Callable[[str, int], float]
+"""F of a robot at a given place (j_ord) in its group."""
+
+
+def pair(a: str, b: str) -> Pair:
+    """The key of an unordered pair: R is symmetric (R_ij = R_ji)."""
+    return (a, b) if a <= b else (b, a)
+
+
+@dataclass(frozen=True)
+class Robot:
+    id: str
+    x: float
+    y: float
+
+
+@dataclass(frozen=True)
+class Group:
+    """A group: `members` in join order (index = j_ord, the greedy seed first), `agent` among them."""
+
+    agent: str
+    members: tuple[str, ...]
+
+    def __post_init__(self) -> None:
+        if self.agent not in self.members:
+            raise ValueError(f"agent {self.agent!r} is not a member of {self.members}")
+        if len(set(self.members)) != len(self.members):
+            raise ValueError(f"a robot appears twice in {self.members}")
+
+    def order(self, robot: str) -> int:
+        """j_ord: the robot's place in the group."""
+        return self.members.index(robot)
+
+
+def group_size(n_robots: int, n_groups: int) -> tuple[int, int]:
+    """(n, x): every group has n = floor(N_r/N_g) robots, and x of them one more."""
+    if n_groups < 1:
+        raise ValueError(f"need at least one group, got {n_groups}")
+    if n_robots < n_groups:
+        raise ValueError(f"{n_robots} robots cannot make {n_groups} groups (merge tasks first)")
+    return n_robots // n_groups, n_robots % n_groups
+
+
+def row_sum(robot: str, others: Iterable[str], rel: Relevance) -> float:
+    return math.fsum(rel.get(pair(robot, o), 0.0) for o in others if o != robot)
+
+
+def greedy_groups(
+    ids: Iterable[str], n_groups: int, rel: Relevance
+) -> tuple[list[tuple[str, ...]], list[str]]:
+    """Step 2: N_g groups of n robots each, and the x robots left over.
+
+    The ungrouped robot with the largest row sum of R (over ungrouped robots: the relevance of
+    grouped ones is zeroed) seeds a group and takes its n-1 most relevant ungrouped partners.
+    """
+    pool = sorted(set(ids))
+    n, _ = group_size(len(pool), n_groups)
+    groups: list[tuple[str, ...]] = []
+    for _ in range(n_groups):
+        seed = min(pool, key=lambda r: (-row_sum(r, pool, rel), r))
+        rest = [r for r in pool if r != seed]
+        partners = sorted(rest, key=lambda r: (-rel.get(pair(seed, r), 0.0), r))[: n - 1]
+        groups.append((seed, *partners))
+        taken = {seed, *partners}
+        pool = [r for r in pool if r not in taken]
+    return groups, pool
+
+
+def elect(members: Sequence[str], belief_of: BeliefOf) -> str:
+    """Step 3: the member with the highest belief degree F (at its j_ord) is the agent; ties by id."""
+    if not members:
+        raise ValueError("cannot elect an agent of an empty group")
+    return min(members, key=lambda r: (-belief_of(r, members.index(r)), r))
+
+
+def distance(a: Robot, b: Robot) -> float:
+    return math.hypot(a.x - b.x, a.y - b.y)
+
+
+def place_leftovers(
+    groups: Sequence[Group], leftovers: Iterable[str], robots: Mapping[str, Robot]
+) -> list[Group]:
+    """Step 4: each of the last x groups, in order, takes the leftover nearest its agent (ties by id)."""
+    left = sorted(set(leftovers))
+    if len(left) > len(groups):
+        raise ValueError(f"{len(left)} leftover robots for {len(groups)} groups")
+    out = list(groups)
+    first = len(groups) - len(left)
+    for g in range(first, len(groups)):
+        agent = robots[out[g].agent]
+        nearest = min(left, key=lambda r: (distance(robots[r], agent), r))
+        left.remove(nearest)
+        out[g] = Group(out[g].agent, (*out[g].members, nearest))
+    return out
+
+
+def form_groups(robots: Iterable[Robot], n_groups: int, rel: Relevance, belief_of: BeliefOf) -> list[Group]:
+    """Steps 2-4 together: greedy groups, elected agents, leftovers matched by distance to agents."""
+    by_id: dict[str, Robot] = {}
+    for robot in robots:
+        if robot.id in by_id:
+            raise ValueError(f"robot id {robot.id!r} appears twice")
+        by_id[robot.id] = robot
+    cores, leftovers = greedy_groups(by_id, n_groups, rel)
+    elected = [Group(elect(core, belief_of), core) for core in cores]
+    return place_leftovers(elected, leftovers, by_id)
+
+
+def group_of(groups: Sequence[Group], robot: str) -> int:
+    """The index of the group the robot belongs to."""
+    for i, group in enumerate(groups):
+        if robot in group.members:
+            return i
+    raise KeyError(robot)

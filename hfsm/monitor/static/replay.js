@@ -1,0 +1,137 @@
+"use strict";
+// The state of a run at a time, rebuilt from its trace records (hfsm-run --trace): per agent the
+// active states at every depth, timers, attempts, vars and mailbox; the messages; the room's poses.
+
+class Replay {
+  constructor() { this.records = []; this.reset(); }
+
+  reset() {
+    this.applied = 0;
+    this.agents = new Map();   // name -> {active: Map(key -> entry), mailbox: [], result, failed}
+    this.messages = [];        // {t, from, to, message, receipts: [{agent, t}]}
+    this.poses = null;         // the latest pose record
+  }
+
+  add(records) { for (const r of records) this.records.push(r); }
+
+  get end() { return this.records.length ? this.records[this.records.length - 1].t : 0; }
+
+  // Apply every record with t <= time (rewinding when time is earlier than what is applied).
+  seek(time) {
+    if (this.applied > 0 && this.records[this.applied - 1].t > time) this.reset();
+    while (this.applied < this.records.length && this.records[this.applied].t <= time + 1e-9) {
+      this.apply(this.records[this.applied]);
+      this.applied += 1;
+    }
+    this.time = time;
+  }
+
+  // The times at which something happened, for stepping.
+  nextTime(time) {
+    for (const r of this.records) if (r.t > time + 1e-9) return r.t;
+    return time;
+  }
+  previousTime(time) {
+    let best = 0;
+    for (const r of this.records) { if (r.t < time - 1e-9) best = r.t; else break; }
+    return best;
+  }
+
+  agent(name) {
+    if (!this.agents.has(name)) this.agents.set(name, { active: new Map(), mailbox: [], result: null, failed: null });
+    return this.agents.get(name);
+  }
+
+  apply(r) {
+    if (r.kind === "pose") { this.poses = r; return; }
+    const a = this.agent(r.agent);
+    const key = r.path.join("/");
+    switch (r.kind) {
+      case "enter": {
+        const previous = a.active.get(key);
+        a.active.set(key, { path: r.path, key, t: r.t, do: r.do || (r.path.length === 1 ? r.path[0] : ""),
+                            deadline: r.deadline, attempt: 1, vars: previous ? previous.vars : null,
+                            machineDeadline: previous ? previous.machineDeadline : undefined });
+        if (r.path.length === 1) { a.result = null; a.failed = null; }
+        this.frameFacts(a, r);
+        break;
+      }
+      case "exit":
+        for (const k of [...a.active.keys()]) if (k === key || k.startsWith(key + "/")) a.active.delete(k);
+        if (r.path.length === 1) a.result = r.outcome === undefined ? null : r.outcome;
+        break;
+      case "event": {
+        const entry = a.active.get(key);
+        if (r.event === "retry" && entry) entry.attempt = r.attempt || entry.attempt + 1;
+        if (r.arrived !== undefined) a.lastBarrier = { path: key, arrived: r.arrived, t: r.t };
+        this.frameFacts(a, r);
+        const i = a.mailbox.findIndex(m => m.message === r.event);
+        if (i >= 0 && r.message_arc !== false && this.isMessage(r.event)) a.mailbox.splice(i, 1);
+        break;
+      }
+      case "send":
+        this.messages.push({ t: r.t, from: r.agent, to: r.to, message: r.message, data: r.data, receipts: [] });
+        break;
+      case "receive": {
+        a.mailbox.push({ message: r.message, sender: r.sender, t: r.t, data: r.data });
+        const sent = this.messages.find(m => m.from === r.sender && m.message === r.message &&
+          (m.to === r.agent || m.to === "others" || m.to === "all") && !m.receipts.some(x => x.agent === r.agent));
+        if (sent) sent.receipts.push({ agent: r.agent, t: r.t });
+        break;
+      }
+      case "failed":
+        a.failed = r.reason || "failed";
+        a.active.clear();
+        break;
+      default:
+        break;
+    }
+  }
+
+  // A record of a machine's state may tell the machine's vars (on change) and its timer: both
+  // belong to the entry that runs the machine, one level up.
+  frameFacts(a, r) {
+    if (r.vars === undefined && r.machine_deadline === undefined) return;
+    const frame = a.active.get(r.path.slice(0, -1).join("/"));
+    if (!frame) return;
+    if (r.vars !== undefined) frame.vars = r.vars;
+    if (r.machine_deadline !== undefined) frame.machineDeadline = r.machine_deadline;
+  }
+
+  isMessage(name) { return this.messages.some(m => m.message === name); }
+
+  // Every message of the whole trace with when each addressee got it (null: never), whatever the
+  // time shown: so a message still in flight is told apart from one the radio lost.
+  fates() {
+    if (this._fates && this._fatesOf === this.records.length) return this._fates;
+    const names = this.agentNames();
+    const sends = [];
+    for (const r of this.records) {
+      if (r.kind === "send") {
+        const to = r.to === "others" ? names.filter(n => n !== r.agent) : r.to === "all" ? names : [r.to];
+        sends.push({ t: r.t, from: r.agent, message: r.message, got: Object.fromEntries(to.map(n => [n, null])) });
+      } else if (r.kind === "receive") {
+        const m = sends.find(s => s.from === r.sender && s.message === r.message && s.got[r.agent] === null);
+        if (m) m.got[r.agent] = r.t;
+      }
+    }
+    this._fates = sends; this._fatesOf = this.records.length;
+    return sends;
+  }
+
+  // Active entries whose path is `path` plus one name, in the order they were entered.
+  children(agentName, path) {
+    const a = this.agent(agentName);
+    const depth = path.length;
+    const prefix = path.join("/") + "/";
+    return [...a.active.values()].filter(e => e.path.length === depth + 1 && e.key.startsWith(prefix));
+  }
+
+  agentNames() {
+    const names = [];
+    for (const r of this.records) if (r.kind !== "pose" && r.agent && !names.includes(r.agent)) names.push(r.agent);
+    return names;
+  }
+}
+
+if (typeof module !== "undefined") module.exports = { Replay };
