@@ -8,6 +8,7 @@ run; and what `--view 3d` costs per simulated minute against the schematic view.
 from __future__ import annotations
 
 import argparse
+import json
 import shutil
 import subprocess
 import sys
@@ -56,7 +57,7 @@ def main(argv: list[str] | None = None) -> int:
     walls = {view: whole_run("opposite_long_side", view, scratch) for view in ("top", "3d")}
     shutil.copy(scratch / "opposite_long_side-3d.png", args.out / "opposite_long_side-at-wall.png")
     trace = (scratch / "opposite_long_side-seed0.jsonl").read_text().splitlines()
-    minutes = float(trace[-1].split('"t": ', 1)[1].split(",", 1)[0]) / 60
+    minutes = float(json.loads(trace[-1])["t"]) / 60
     extra = (walls["3d"] - walls["top"]) / minutes
     lines = [
         "Command: `.venv/bin/python tools/gallery3d.py --report docs/PERFORMANCE.md` (the task on",

@@ -12,7 +12,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from hfsm.cli.monitor import drawings, find_machine, read_trace, top_name  # noqa: E402
+from hfsm.cli.monitor import replay  # noqa: E402
 from hfsm.monitor.hub import Hub  # noqa: E402
 from hfsm.monitor.serve import Server  # noqa: E402
 
@@ -28,9 +28,8 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--lib", action="append", type=Path, default=[])
     p.add_argument("--width", type=int, default=1600)
     args = p.parse_args(argv)
-    records = read_trace(args.trace)
-    top = find_machine(top_name(records, args.trace), [args.trace.parent, *args.lib])
-    server = Server(Hub(records), drawings(top, args.lib) if top else {}, args.trace.name)
+    records, svgs = replay(args.trace, args.lib)
+    server = Server(Hub(records), svgs, args.trace.name)
     server.start()
     from playwright.sync_api import sync_playwright
 

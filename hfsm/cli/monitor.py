@@ -6,7 +6,6 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-import time
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -38,11 +37,9 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
-        records = read_trace(args.trace)
-        top = args.machine or find_machine(top_name(records, args.trace), [args.trace.parent, *args.lib])
-        svgs = drawings(top, args.lib) if top is not None else {}
+        records, svgs = replay(args.trace, args.lib, args.machine)
         from hfsm.monitor.hub import Hub
-        from hfsm.monitor.serve import Server
+        from hfsm.monitor.serve import Server, hold
 
         video = next((v for v in (args.trace.with_suffix(".mp4"), args.trace.with_suffix(".webm"))
                       if v.is_file()), None)
@@ -68,10 +65,14 @@ def main(argv: Sequence[str] | None = None) -> int:
     return 0
 
 
-def hold(seconds: float | None) -> None:
-    deadline = None if seconds is None else time.monotonic() + seconds
-    while deadline is None or time.monotonic() < deadline:
-        time.sleep(0.2)
+def replay(
+    trace: Path, libs: list[Path], machine: Path | None = None
+) -> tuple[list[dict[str, Any]], dict[str, str]]:
+    """A trace's records and the drawings of its machines (`machine`, else found by the trace's top
+    name beside the trace, in `libs` or in the project's machines)."""
+    records = read_trace(trace)
+    top = machine or find_machine(top_name(records, trace), [trace.parent, *libs])
+    return records, drawings(top, libs) if top is not None else {}
 
 
 def read_trace(path: Path) -> list[dict[str, Any]]:

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import queue
-import threading
 from typing import Any
 
 Record = dict[str, Any]
@@ -25,7 +24,6 @@ class Hub:
         self.ended = not live
         self.dropped = 0
         self._queue: queue.Queue[Record | None] = queue.Queue(size)
-        self._changed = threading.Condition()
 
     def offer(self, record: Record | None) -> None:
         """From the run's thread: a record, or None when the run has ended. Never blocks."""
@@ -47,9 +45,6 @@ class Hub:
             else:
                 self.records.append(record)
                 came += 1
-        if came or self.ended:
-            with self._changed:
-                self._changed.notify_all()
         return came
 
     def since(self, start: int) -> list[Record]:

@@ -8,6 +8,7 @@ writes the same trace with or without the monitor. `--realtime K` paces a run to
 from __future__ import annotations
 
 import argparse
+import contextlib
 import sys
 import time
 from typing import Any
@@ -109,18 +110,16 @@ class LiveMonitor:
 
     def finish(self, hold: float | None) -> None:
         """Keep the page up after the run as asked, then stop serving."""
+        from hfsm.monitor import serve
+
         self.hub.offer(None)
         if hold is None:
             hold = float("inf") if sys.stdin.isatty() else 0.0
         if hold > 0:
             shown = "until Ctrl-C" if hold == float("inf") else f"for {hold:g} s"
             print(f"hfsm-run: the run has ended; the monitor stays up {shown}", file=sys.stderr, flush=True)
-            try:
-                deadline = time.monotonic() + hold
-                while time.monotonic() < deadline:
-                    time.sleep(0.2)
-            except KeyboardInterrupt:
-                pass
+            with contextlib.suppress(KeyboardInterrupt):
+                serve.hold(hold)
         self.server.stop()
 
 

@@ -46,6 +46,13 @@ class Server:
         self._socket.close()
 
 
+def hold(seconds: float | None) -> None:
+    """Wait `seconds` (None or inf: until interrupted) while the server's thread serves."""
+    deadline = None if seconds is None else time.monotonic() + seconds
+    while deadline is None or time.monotonic() < deadline:
+        time.sleep(0.2)
+
+
 def _bind(port: int) -> socket.socket:
     if not 0 <= port <= 65535:
         raise UsageError(f"--port takes 0..65535 (0: any free port), not {port}")
