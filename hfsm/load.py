@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from hfsm.checks import enforce, run_checks
-from hfsm.errors import Finding
+from hfsm.errors import Finding, UserError
 from hfsm.library import Library, MachineFile
 from hfsm.model import state_calls
 from hfsm.registry import Registry
@@ -43,6 +43,11 @@ def load(
     and frees few, and the collector's passes over them made a large machine's load grow faster than
     its size.
     """
+    for path in paths:
+        try:
+            path.resolve()
+        except (RuntimeError, OSError) as exc:  # a symlink loop
+            raise UserError([Finding(str(path), 1, 1, "E105", f"cannot read the file: {exc}")]) from None
     with collector_paused():
         return _load(paths, libs or [], registry, strict, world, world_inputs)
 

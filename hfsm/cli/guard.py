@@ -77,15 +77,20 @@ def check_outputs(outputs: Iterable[tuple[str, Path]], inputs: Iterable[Path]) -
 
 
 def is_regular_or_new(path: Path) -> bool:
+    """A regular file, or nothing yet (a folder on the way that is a file is left to make_folder)."""
     try:
         return stat.S_ISREG(path.stat().st_mode)
-    except FileNotFoundError:
+    except (FileNotFoundError, NotADirectoryError):
         return True
+    except OSError:
+        return False
 
 
 def make_folder(folder: Path, flag: str) -> None:
     try:
         folder.mkdir(parents=True, exist_ok=True)
+        if not folder.is_dir():
+            raise NotADirectoryError(20, "it is a file, not a folder")
     except OSError as exc:
         raise UsageError(f"{flag}: cannot write in {folder}: {exc.strerror or exc}") from None
 

@@ -209,3 +209,18 @@ def test_a_second_ctrl_c_stops_at_once(
     signal_on_log(signal.SIGINT, 2, again=True)
     code, _, err = run(capsys, machine("loop", LOOP))
     assert code == 130 and "stopped by SIGINT" in err and "Traceback" not in err
+
+
+def test_an_out_folder_that_is_a_file_is_exit_2(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    afile = tmp_path / "afile"
+    afile.write_text("")
+    code, _, err = run(capsys, ROOT / "machines" / "move_furniture.yaml", "--out", afile)
+    assert code == 2 and "cannot write in" in err and "Traceback" not in err
+
+
+def test_a_symlink_loop_as_file_is_exit_2(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    one, two = tmp_path / "one.yaml", tmp_path / "two.yaml"
+    one.symlink_to(two)
+    two.symlink_to(one)
+    code, _, err = run(capsys, one, "--check")
+    assert code == 2 and err.startswith(f"{one}:1:1: error[E105]") and "Traceback" not in err
