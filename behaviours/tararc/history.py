@@ -31,6 +31,8 @@ class Record:
 
 @dataclass(frozen=True)
 class History:
+    """Records with no collaboration (0, 0) are dropped: they are the same as no record."""
+
     pairs: Mapping[Pair, Record] = field(default_factory=dict)
     robots: Mapping[str, Record] = field(default_factory=dict)
     beliefs: Mapping[str, float] = field(default_factory=dict)
@@ -39,6 +41,9 @@ class History:
         for a, b in self.pairs:
             if a >= b:
                 raise ValueError(f"pair key ({a!r}, {b!r}) must be two ids in increasing order")
+        object.__setattr__(self, "pairs", {k: r for k, r in sorted(self.pairs.items()) if r != Record()})
+        object.__setattr__(self, "robots", {k: r for k, r in sorted(self.robots.items()) if r != Record()})
+        object.__setattr__(self, "beliefs", dict(sorted(self.beliefs.items())))
 
     def pair_record(self, a: str, b: str) -> Record:
         return self.pairs.get(pair(a, b), Record())
@@ -94,8 +99,4 @@ def record_run(
             robots[m] = robots.get(m, Record()).after(ok)
     merged = dict(history.beliefs)
     merged.update(beliefs or {})
-    return History(
-        pairs=dict(sorted(pairs.items())),
-        robots=dict(sorted(robots.items())),
-        beliefs=dict(sorted(merged.items())),
-    )
+    return History(pairs, robots, merged)
