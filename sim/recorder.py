@@ -14,7 +14,7 @@ import numpy as np
 
 from sim.profile import ROBOT_COLOURS, TABLE_COLOUR
 from sim.video import VideoWriter
-from sim.view3d import label, perspective, status
+from sim.view3d import label, perspective, robot_text, status
 
 if TYPE_CHECKING:
     from sim.world import World
@@ -68,8 +68,7 @@ class Recorder:
             self._draw_robot(image, world, name, ROBOT_COLOURS[index % len(ROBOT_COLOURS)], px)
         for name in world.robots:
             x, y, _ = truth.robot_pose(name)
-            extra = world.labels.get(name)
-            label(image, name + (f": {extra}" if extra else ""), px(x, y + 0.3))
+            label(image, robot_text(name, world.labels), px(x, y + 0.3))
         status(image, world)
         cv2.putText(image, f"wall gap {truth.table_wall_distance():.2f} m",
                     (margin + 4, self.size - margin - 6), cv2.FONT_HERSHEY_SIMPLEX, 0.45,

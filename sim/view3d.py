@@ -58,10 +58,15 @@ def perspective(world: World, size: tuple[int, int] = (640, 480),
         x, y, _ = world.truth.robot_pose(name)
         at = project(view, proj, (x, y, 0.75), size)
         if at is not None:
-            text = name + (f": {labels[name]}" if labels and labels.get(name) else "")
-            label(image, text, at)
+            label(image, robot_text(name, labels), at)
     status(image, world)
     return image
+
+
+def robot_text(name: str, labels: Mapping[str, str] | None) -> str:
+    """A robot's name, with `labels[name]` beside it when there is one."""
+    extra = labels.get(name) if labels else None
+    return f"{name}: {extra}" if extra else name
 
 
 def label(image: np.ndarray, text: str, at: tuple[int, int]) -> None:

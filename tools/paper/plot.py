@@ -7,8 +7,9 @@ from pathlib import Path
 
 from matplotlib.figure import Figure
 
-PAPER_MEAN_MINUTES = 28.9
-PAPER_LIMIT_MINUTES = 35.0
+from tools.paper.reference import PAPER_LIMIT_SECONDS, PAPER_MEAN_MINUTES
+
+PAPER_LIMIT_MINUTES = PAPER_LIMIT_SECONDS / 60
 
 
 def failure_plot(curves: dict[str, Sequence[tuple[float, float]]], path: Path, title: str) -> None:
