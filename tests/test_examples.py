@@ -54,3 +54,10 @@ def test_example_runs(name: str) -> None:
 def test_machine_passes_strict_checks(path: Path) -> None:
     loaded = load([path], registry=Registry.discover(), strict=True)
     assert loaded.warnings == [] or all(w.severity.value == "error" for w in loaded.warnings)
+
+
+def test_the_readme_shows_the_parallel_example_as_it_is() -> None:
+    readme = (ROOT / "README.md").read_text()
+    shown = readme.split("### A parallel state", 1)[1].split("```yaml\n", 1)[1].split("```", 1)[0]
+    assert shown in (ROOT / "examples" / "parallel.yaml").read_text()
+    assert '{"outcome": "found", "outputs": {"steps": 12}, "time": 1.5}' in readme

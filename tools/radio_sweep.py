@@ -69,7 +69,8 @@ def main(argv: list[str] | None = None) -> int:
             return 2
         lines.append(row(loss, args.latency, trials))
         failed += failures(trials)
-    command = f"`.venv/bin/python tools/radio_sweep.py {' '.join(argv if argv is not None else sys.argv[1:])}`"
+    flags = " ".join(argv if argv is not None else sys.argv[1:])
+    command = f"`.venv/bin/python tools/radio_sweep.py {flags}`"
     minutes = (time.perf_counter() - started) / 60
     out = [f"Command: {command} ({minutes:.0f} min of wall time on 2 cores)", "", *lines, "",
            *(failed or ["No trial failed."])]

@@ -1,6 +1,8 @@
 """TARARC step 7: the help strategies as pure decisions (7a hand-over, 7b lending members)."""
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from behaviours.tararc.grouping import Group, Robot
 from behaviours.tararc.help import HandOver, Transfer, apply_transfers, hand_over, lend
@@ -57,3 +59,48 @@ def test_7b_a_full_group_needs_nothing() -> None:
     assert lend(groups, 0, 2, robots(r0=0, r1=0, r2=1, r3=1, r4=1)) == []
     with pytest.raises(ValueError):
         lend(groups, 0, 0, robots(r0=0, r1=0, r2=1, r3=1, r4=1))
+
+
+@st.composite
+def split_teams(draw: st.DrawFn) -> tuple[list[Group], dict[str, Robot], int]:
+    sizes = draw(st.lists(st.integers(1, 6), min_size=2, max_size=6))
+    groups, where, k = [], {}, 0
+    for size in sizes:
+        ids = [f"r{k + i}" for i in range(size)]
+        k += size
+        groups.append(Group(draw(st.sampled_from(ids)), tuple(ids)))
+        for i in ids:
+            where[i] = Robot(i, draw(st.integers(-9, 9)), draw(st.integers(-9, 9)))
+    return groups, where, draw(st.integers(1, 6))
+
+
+@given(split_teams(), st.data())
+def test_7b_lending_keeps_a_partition_and_the_givers_whole(
+    team: tuple[list[Group], dict[str, Robot], int], data: st.DataObject
+) -> None:
+    groups, where, n_thres = team
+    needy = data.draw(st.integers(0, len(groups) - 1))
+    moves = lend(groups, needy, n_thres, where)
+    after = apply_transfers(groups, moves)
+    assert sorted(m for g in after for m in g.members) == sorted(where)
+    assert all(t.member != groups[t.giver].agent for t in moves)
+    for i, (before, now) in enumerate(zip(groups, after, strict=True)):
+        assert now.agent == before.agent
+        if i != needy:
+            assert len(now.members) >= min(len(before.members), n_thres)
+    others_spare = sum(max(0, len(g.members) - n_thres) for i, g in enumerate(groups) if i != needy)
+    short = max(0, n_thres - len(groups[needy].members))
+    assert len(moves) == min(short, others_spare)
+    assert lend(groups, needy, n_thres, where) == moves
+
+
+@given(st.lists(st.integers(0, 3), min_size=1, max_size=6, unique=False), st.floats(0, 1), st.floats(0, 1))
+def test_7a_the_new_agent_has_the_highest_belief(levels: list[int], energy: float, thres: float) -> None:
+    ids = tuple(f"r{i}" for i in range(len(levels)))
+    beliefs = {i: float(v) for i, v in zip(ids, levels, strict=True)}
+    handed = hand_over(Group(ids[0], ids), energy, thres, beliefs)
+    if energy >= thres or len(ids) == 1:
+        assert handed is None
+        return
+    assert handed is not None and handed.old == ids[0] and ids[0] not in handed.group.members
+    assert beliefs[handed.new] == max(beliefs[i] for i in ids[1:])
