@@ -18,13 +18,18 @@ class Calls(Cancelling):
     def _ticks(self, timer: Any, frame: Frame) -> int | Event:
         if timer.__class__ is int:
             return int(timer)
+        seconds = self._seconds(timer, frame, "timer", "a positive number of seconds", zero=False)
+        return seconds if isinstance(seconds, Event) else timer_ticks(seconds, self.dt)
+
+    def _seconds(self, expr: Any, frame: Frame, what: str, takes: str, *, zero: bool) -> float | Event:
+        """A span given as an expression, checked: finite, and positive (or zero, if allowed)."""
         try:
-            seconds = timer(frame.scope)
+            seconds = expr(frame.scope)
         except ExprValueError as exc:
-            return Event("error", error=f"timer: {exc}")
-        if not is_finite_number(seconds) or seconds <= 0:
-            return Event("error", error=f"timer must be a positive number of seconds, not {seconds!r}")
-        return timer_ticks(seconds, self.dt)
+            return Event("error", error=f"{what}: {exc}")
+        if not is_finite_number(seconds) or seconds < 0 or (seconds == 0 and not zero):
+            return Event("error", error=f"{what} must be {takes}, not {seconds!r}")
+        return float(seconds)
 
     def _params(self, callee: Callee, frame: Frame) -> dict[str, Any] | Event:
         try:
@@ -155,10 +160,5 @@ class Calls(Cancelling):
     def _delay(self, delay: Any, frame: Frame) -> int | Event:
         if delay.__class__ is int:
             return int(delay)
-        try:
-            seconds = delay(frame.scope)
-        except ExprValueError as exc:
-            return Event("error", error=f"retry delay: {exc}")
-        if not is_finite_number(seconds) or seconds < 0:
-            return Event("error", error=f"retry delay must be a number of seconds >= 0, not {seconds!r}")
-        return max(0, self.span(seconds))
+        seconds = self._seconds(delay, frame, "retry delay", "a number of seconds >= 0", zero=True)
+        return seconds if isinstance(seconds, Event) else max(0, self.span(seconds))

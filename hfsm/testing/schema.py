@@ -2,17 +2,9 @@
 
 from __future__ import annotations
 
-import json
-from typing import Any
-
+from hfsm.schema import schema_text as _schema_text
 from hfsm.testing.model import TestFile
 
 
-def schema() -> dict[str, Any]:
-    body = TestFile.model_json_schema(by_alias=True)
-    body["$schema"] = "https://json-schema.org/draft/2020-12/schema"
-    return body
-
-
 def schema_text() -> str:
-    return json.dumps(schema(), indent=2, sort_keys=True) + "\n"
+    return _schema_text(TestFile)
