@@ -16,7 +16,7 @@ from hfsm.diagram.model import Cluster, Edge, Figure, Item, Node, Ref, Role, Sty
 from hfsm.diagram.part import Part, cluster_id, node_id
 from hfsm.graph import ANY, WATCH, Arc, arcs
 from hfsm.load import Loaded
-from hfsm.model import CallState, ChoiceState, Machine, ParallelState
+from hfsm.model import CallState, ChoiceState, Machine, ParallelState, state_calls
 from hfsm.registry import Registry
 from hfsm.spec import BehaviourSpec
 
@@ -257,9 +257,7 @@ def overview(src: Sources, roots: Sequence[str], links: Collection[str] = ()) ->
         order.append(name)
         m = src.machines.get(name)
         for s, st in m.states.items() if m else ():
-            dos = [st.do] if isinstance(st, CallState) else []
-            dos += [r.do for r in st.parallel.values()] if isinstance(st, ParallelState) else []
-            for do in dos:
+            for _, do in state_calls(s, st):
                 spec = src.specs.get(do)
                 if spec is None or spec.kind != "builtin":
                     calls.setdefault((name, do), []).append(s)
