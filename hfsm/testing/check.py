@@ -267,31 +267,19 @@ class _FileChecker:
 
     # --- scripted inputs and messages ----------------------------------------------------------
 
+    def _known_agent(self, at: Path_, name: str | None, agents: set[str]) -> None:
+        """T311 for an agent the test does not have (None: every agent, always known)."""
+        if name is not None and name not in agents:
+            self.error(at, "T311", f"no agent '{name}' in this test{did_you_mean(name, agents)}")
+
     def _script(self, case: Case, at: Path_, agents: set[str]) -> tuple[list[Any], list[Any], list[FailAt]]:
         inputs, inputs_at = self._pick(case, "inputs", at)
         messages, messages_at = self._pick(case, "messages", at)
         fail, fail_at = self._pick(case, "fail", at)
-        for i, failure in enumerate(fail or []):
-            if failure.agent not in agents:
-                self.error(
-                    (*fail_at, i, "agent"),
-                    "T311",
-                    f"no agent '{failure.agent}' in this test{did_you_mean(failure.agent, agents)}",
-                )
-        for i, entry in enumerate(inputs or []):
-            if entry.agent is not None and entry.agent not in agents:
-                self.error(
-                    (*inputs_at, i, "agent"),
-                    "T311",
-                    f"no agent '{entry.agent}' in this test{did_you_mean(entry.agent, agents)}",
-                )
-        for i, message in enumerate(messages or []):
-            if message.to is not None and message.to not in agents:
-                self.error(
-                    (*messages_at, i, "to"),
-                    "T311",
-                    f"no agent '{message.to}' in this test{did_you_mean(message.to, agents)}",
-                )
+        named = ((fail_at, fail, "agent"), (inputs_at, inputs, "agent"), (messages_at, messages, "to"))
+        for where, items, key in named:
+            for i, item in enumerate(items or []):
+                self._known_agent((*where, i, key), getattr(item, key), agents)
         return (
             [(e, (*inputs_at, i)) for i, e in enumerate(inputs or [])],
             [(m, (*messages_at, i)) for i, m in enumerate(messages or [])],
