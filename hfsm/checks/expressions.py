@@ -62,19 +62,25 @@ def check_expression(ctx: CheckContext, mf: MachineFile, where: Where, source: s
             ctx.error(mf, where, "E330", message)
 
 
-def expressions_in(where: Where, value: Any) -> Iterator[tuple[Where, str]]:
-    """The `${…}` expressions of a literal tree with where each stands, at any depth, never in keys."""
+def strings_in(where: Where, value: Any) -> Iterator[tuple[Where, str]]:
+    """The strings of a literal tree with where each stands, at any depth, never keys."""
     if isinstance(value, str):
-        if "${" in value:
-            for part in split(value):
-                if isinstance(part, tuple):
-                    yield where, part[0]
+        yield where, value
     elif isinstance(value, dict):
         for key, item in value.items():
-            yield from expressions_in((*where, key), item)
+            yield from strings_in((*where, key), item)
     elif isinstance(value, list):
         for i, item in enumerate(value):
-            yield from expressions_in((*where, i), item)
+            yield from strings_in((*where, i), item)
+
+
+def expressions_in(where: Where, value: Any) -> Iterator[tuple[Where, str]]:
+    """The `${…}` expressions of a literal tree with where each stands, at any depth, never in keys."""
+    for at, text in strings_in(where, value):
+        if "${" in text:
+            for part in split(text):
+                if isinstance(part, tuple):
+                    yield at, part[0]
 
 
 def check_value(ctx: CheckContext, mf: MachineFile, where: Where, value: Any, place: Place) -> None:

@@ -7,6 +7,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from hfsm.checks.context import CheckContext, call_states, parallel_states
+from hfsm.checks.expressions import strings_in
 from hfsm.expr import ExprSyntaxError, Names, compile_expr, reads
 from hfsm.library import MachineFile
 from hfsm.model import CallState, Region
@@ -81,18 +82,7 @@ def _sets_number_to_text(ctx: CheckContext, mf: MachineFile, at: Where, var: str
 
 
 def _strings(ctx: CheckContext, mf: MachineFile, where: Where, value: Any) -> None:
-    for path, text in _texts(where, value):
+    for path, text in strings_in(where, value):
         if reads_like_expression(text):
             message = f"'{text}' reads like an expression but is taken as text; write '{wrapped(text)}'"
             ctx.warn(mf, path, "W405", message)
-
-
-def _texts(where: Where, value: Any) -> Iterator[tuple[Where, str]]:
-    if isinstance(value, str):
-        yield where, value
-    elif isinstance(value, dict):
-        for key, item in value.items():
-            yield from _texts((*where, key), item)
-    elif isinstance(value, list):
-        for i, item in enumerate(value):
-            yield from _texts((*where, i), item)
