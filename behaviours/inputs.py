@@ -1,7 +1,8 @@
 """The inputs the sim world declares (SPEC 12): what machines read as `in.NAME`.
 
 Declarations only, so that `hfsm-run --check` knows them without starting the simulator; the
-values come from `behaviours.senses`, from what a robot senses.
+values come from `behaviours.senses`, from what a robot senses (`radio_delay` from what its radio
+hears, in `behaviours.simworld`).
 """
 
 from __future__ import annotations
@@ -36,6 +37,12 @@ SIM_INPUTS: Mapping[str, InputSpec] = {
             "pose",
             "dict",
             "odometry in the robot's own start frame: {x: metres, y: metres, yaw: degrees, left positive}",
+        ),
+        InputSpec(
+            "radio_delay",
+            "float",
+            "seconds the latest message or barrier notice this robot heard took on the radio (its "
+            "sender's time stamp to its arrival, by the robots' synchronised clocks); 0 before any",
         ),
         InputSpec("battery", "float", "the battery's charge, 0 (empty: the robot fails) to 1 (full)"),
     )
