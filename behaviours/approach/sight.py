@@ -61,13 +61,11 @@ def see_table(body: Body, yaw: float, pitch: float) -> TableSighting | None:
 def table_points(body: Body, yaws: Sequence[float], pitch: float,
                  value_ratio: float) -> list[np.ndarray]:
     """Outline points of the top face from several head yaws, in the odometry frame."""
-    pose = body.odometry()
     views = []
     for yaw in yaws:
         body.look(clamp_yaw(yaw), pitch)
-        pts = outline_points(body.image("forward"), body.camera("forward"), value_ratio)
-        views.append(np.array([body_to_odom(pose, (float(x), float(y))) for x, y in pts]
-                              ).reshape(-1, 2))
+        camera = body.camera("forward")
+        views.append(camera.to_odom(outline_points(body.image("forward"), camera, value_ratio)))
     return views
 
 
