@@ -6,7 +6,9 @@ odometry, `CameraModel.to_plane` from image to floor); pixel classes by colour (
 small detectors on them: `blobs` (table and robot blobs, ground distance and bearing, the
 paper's Figure 5 tests), `table_rect` (the table top as a rectangle on the floor plan),
 `edge` (the near edge seen looking down), `reach` (how far the table reaches to one side),
-`walls` (the floor-wall line); `floor` (lines on the floor plan); `config` (every threshold).
+`walls` (the floor-wall line), `tables` (every table in view told apart, in the odometry
+frame, and the one a task names picked by where it is); `floor` (lines on the floor plan);
+`config` (every threshold).
 """
 
 from sim.perception.blobs import (
@@ -34,6 +36,7 @@ from sim.perception.config import DEFAULT_CONFIG, PerceptionConfig
 from sim.perception.edge import NO_EDGE, NearEdge, near_edge
 from sim.perception.reach import NO_EXTENT, SideExtent, side_extent
 from sim.perception.table_rect import NO_RECT, TableRect, fit_rect, outline_points, table_rect
+from sim.perception.tables import TableSeen, pick_table, see_tables
 from sim.perception.walls import NO_WALL, WallSeen, floor_wall_line, wall_to_side
 
 __all__ = [
@@ -51,6 +54,7 @@ __all__ = [
     "PerceptionConfig",
     "SideExtent",
     "TableRect",
+    "TableSeen",
     "WallSeen",
     "blob_from_mask",
     "blob_ground",
@@ -69,7 +73,9 @@ __all__ = [
     "is_near",
     "near_edge",
     "outline_points",
+    "pick_table",
     "pixel_bearing",
+    "see_tables",
     "side_extent",
     "table_distance",
     "table_mask",

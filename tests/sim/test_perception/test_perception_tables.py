@@ -1,0 +1,146 @@
+"""Several tables in view: each told apart with its place, heading and size in the robot's
+odometry frame, and the one a task names picked by where it is. The extra tables are built
+into the pybullet world here (the scenario holds one table)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from sim.perception import components, top_face
+from sim.perception.table_rect import TableRect
+from sim.perception.tables import Piece, TableSeen, group_pieces, pick_table, see_tables
+from sim.room import build_table
+from sim.scenario import TableSpec, scenario_from_dict
+from sim.world import World
+
+# (x, y, yaw degrees, length, width) in the world; r1 starts at (0, -1.4) facing +y
+TABLES = [(0.0, 0.0, 0.0, 0.8, 0.5), (-1.3, -0.5, 60.0, 1.0, 0.5), (1.4, -0.6, 100.0, 0.8, 0.6)]
+START = (0.0, -1.4, 90.0)
+HEAD_YAWS = (-0.9, 0.0, 0.9)
+
+
+def three_tables(robots: dict[str, dict[str, float]]) -> World:
+    x, y, yaw, length, width = TABLES[0]
+    world = World(scenario_from_dict({
+        "room": {"width": 8.0, "depth": 8.0}, "robots": robots,
+        "table": {"x": x, "y": y, "yaw": yaw, "length": length, "width": width}}), 0)
+    for x, y, yaw, length, width in TABLES[1:]:
+        build_table(world._cid, TableSpec(x=x, y=y, yaw=yaw, length=length, width=width))
+    return world
+
+
+@pytest.fixture
+def world() -> Iterator[World]:
+    with three_tables({"r1": {"x": START[0], "y": START[1], "yaw": START[2]}}) as w:
+        yield w
+
+
+def look_around(world: World, name: str = "r1", pitch: float = 0.25) -> list[TableSeen]:
+    robot = world.robots[name]
+    views = []
+    for yaw in HEAD_YAWS:
+        robot.set_head(yaw, pitch)
+        world.advance(1.0)
+        views.append((robot.image("forward"), robot.camera_model("forward")))
+    return see_tables(views)
+
+
+def in_start_frame(x: float, y: float) -> tuple[float, float]:
+    """A world point in r1's odometry frame (its start pose; it has not moved)."""
+    sx, sy, syaw = START[0], START[1], math.radians(START[2])
+    c, s = math.cos(syaw), math.sin(syaw)
+    return (c * (x - sx) + s * (y - sy), -s * (x - sx) + c * (y - sy))
+
+
+def heading_error(a: float, b: float) -> float:
+    """Difference of two long-axis directions, modulo pi (degrees)."""
+    d = math.degrees(a - b) % 180.0
+    return min(d, 180.0 - d)
+
+
+def matches(seen: TableSeen, truth: tuple[float, float, float, float, float]) -> bool:
+    """Within what 160 x 120 pixels give 1.4 m away, the top seen at a grazing angle (a pixel
+    row of the top is several cm); sizes within the behaviours' `Look.size_tolerance`."""
+    x, y, yaw, length, width = truth
+    tx, ty = in_start_frame(x, y)
+    r = seen.rect
+    return (math.dist((r.x, r.y), (tx, ty)) < 0.08 and abs(r.length - length) < 0.1
+            and abs(r.width - width) < 0.1
+            and heading_error(r.axis, math.radians(yaw - START[2])) < 5.0)
+
+
+def test_three_tables_told_apart_with_place_heading_and_size(world: World) -> None:
+    seen = look_around(world)
+    assert len(seen) == 3
+    for truth in TABLES:
+        assert sum(matches(s, truth) for s in seen) == 1, truth
+    distances = [math.hypot(s.rect.x, s.rect.y) for s in seen]
+    assert distances == sorted(distances)
+
+
+@pytest.mark.parametrize("index", range(len(TABLES)))
+def test_a_task_names_its_table_by_an_approximate_place(world: World, index: int) -> None:
+    seen = look_around(world)
+    x, y = TABLES[index][:2]
+    near = in_start_frame(x + 0.3, y - 0.25)          # the task knows the place roughly
+    picked = pick_table(seen, near, gate=0.6)
+    assert picked is not None and matches(picked, TABLES[index])
+    assert pick_table(seen, in_start_frame(0.0, 2.5), gate=0.6) is None   # nothing there
+
+
+def test_a_robot_in_front_of_a_table_does_not_split_it() -> None:
+    """r2 stands between r1 and the middle table and cuts its top in two in the image."""
+    robots = {"r1": {"x": START[0], "y": START[1], "yaw": START[2]},
+              "r2": {"x": 0.0, "y": -0.5, "yaw": -90.0}}
+    with three_tables(robots) as world:
+        robot = world.robots["r1"]
+        robot.set_head(0.0, 0.25)
+        world.advance(1.0)
+        image = robot.image("forward")
+        assert components(top_face(image))[1].size == 2
+        seen = see_tables([(image, robot.camera_model("forward"))])
+    assert len(seen) == 1 and matches(seen[0], TABLES[0])
+
+
+def test_no_tables_in_a_blank_view(world: World) -> None:
+    camera = world.robots["r1"].camera_model("forward")
+    assert see_tables([(np.zeros((120, 160, 3), np.uint8), camera)]) == []
+    assert see_tables([]) == []
+
+
+def square(cx: float, cy: float, half: float) -> np.ndarray:
+    t = np.linspace(-half, half, 20)
+    edges = [np.column_stack([t, np.full_like(t, s * half)]) for s in (-1, 1)]
+    edges += [np.column_stack([np.full_like(t, s * half), t]) for s in (-1, 1)]
+    return np.concatenate(edges) + np.array([cx, cy])
+
+
+@given(order=st.permutations(range(4)), spacing=st.floats(0.8, 3.0))
+def test_pieces_group_by_gap_in_any_order(order: list[int], spacing: float) -> None:
+    """Two tables (0.2 m or more apart), each seen as two overlapping pieces: two groups in any order."""
+    pieces = [Piece(square(0.0, 0.0, 0.2), False), Piece(square(0.1, 0.0, 0.2), True),
+              Piece(square(spacing, 0.0, 0.2), False), Piece(square(spacing + 0.05, 0.1, 0.2), False)]
+    groups = group_pieces([pieces[i] for i in order], max_gap=0.15)
+    assert len(groups) == 2
+    assert sorted(len(g.points) for g in groups) == [160, 160]
+    assert sorted(g.clipped for g in groups) == [False, True]
+
+
+@given(x=st.floats(-3, 3), y=st.floats(-3, 3), gate=st.floats(0.1, 2.0))
+def test_pick_table_is_the_nearest_within_the_gate(x: float, y: float, gate: float) -> None:
+    tables = [TableSeen(TableRect(True, tx, ty, 0.0, 0.8, 0.5, 8), False)
+              for tx, ty in ((0.0, 0.0), (1.5, 0.5), (-1.0, 2.0))]
+    picked = pick_table(tables, (x, y), gate)
+    nearest = min(tables, key=lambda t: math.dist(t.position, (x, y)))
+    if math.dist(nearest.position, (x, y)) <= gate:
+        assert picked is nearest
+    else:
+        assert picked is None
+
+
