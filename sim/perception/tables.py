@@ -50,9 +50,9 @@ class Piece:
     clipped: bool
 
 
-def _regions(image: np.ndarray, cfg: PerceptionConfig) -> list[np.ndarray]:
+def _regions(image: np.ndarray, value_ratio: float, cfg: PerceptionConfig) -> list[np.ndarray]:
     """One mask per table in view: the top-face regions, grouped where robots join them."""
-    top = top_face(image, cfg=cfg)
+    top = top_face(image, value_ratio, cfg)
     labels, keep = components(top, cfg)
     if keep.size <= 1:
         return [labels == k for k in keep]
@@ -69,12 +69,12 @@ def _regions(image: np.ndarray, cfg: PerceptionConfig) -> list[np.ndarray]:
     return list(groups.values())
 
 
-def pieces_in_view(image: np.ndarray, camera: CameraModel,
+def pieces_in_view(image: np.ndarray, camera: CameraModel, value_ratio: float = 0.9,
                    cfg: PerceptionConfig = DEFAULT_CONFIG) -> list[Piece]:
     """One piece per table in the image (see the module docstring)."""
     h, w = image.shape[:2]
     pieces = []
-    for region in _regions(image, cfg):
+    for region in _regions(image, value_ratio, cfg):
         contours, _ = cv2.findContours(region.astype(np.uint8), cv2.RETR_EXTERNAL,
                                        cv2.CHAIN_APPROX_NONE)
         us, vs = np.concatenate([c.reshape(-1, 2) for c in contours]).T
@@ -112,12 +112,13 @@ def group_pieces(pieces: Sequence[Piece], max_gap: float) -> list[Piece]:
     return groups
 
 
-def see_tables(views: Iterable[tuple[np.ndarray, CameraModel]],
+def see_tables(views: Iterable[tuple[np.ndarray, CameraModel]], value_ratio: float = 0.9,
                cfg: PerceptionConfig = DEFAULT_CONFIG) -> list[TableSeen]:
     """Every table in the views (images with the camera models they were taken with), nearest
-    to the last view's camera first."""
+    to the last view's camera first. `value_ratio`: see `colour.top_face`."""
     views = list(views)
-    pieces = [piece for image, camera in views for piece in pieces_in_view(image, camera, cfg)]
+    pieces = [piece for image, camera in views
+              for piece in pieces_in_view(image, camera, value_ratio, cfg)]
     tables = []
     for piece in group_pieces(pieces, cfg.table_gap):
         rect = fit_rect(piece.points)

@@ -1,6 +1,5 @@
 """Several tables in view: each told apart with its place, heading and size in the robot's
-odometry frame, and the one a task names picked by where it is. The extra tables are built
-into the pybullet world here (the scenario holds one table)."""
+odometry frame, and the one a task names picked by where it is (scene: tests/tables_scene.py)."""
 
 from __future__ import annotations
 
@@ -11,33 +10,19 @@ import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
+from tables_scene import START, TABLES, in_start_frame, matches, three_tables
 
 from sim.perception import components, top_face
 from sim.perception.table_rect import TableRect
 from sim.perception.tables import Piece, TableSeen, group_pieces, pick_table, see_tables
-from sim.room import build_table
-from sim.scenario import TableSpec, scenario_from_dict
 from sim.world import World
 
-# (x, y, yaw degrees, length, width) in the world; r1 starts at (0, -1.4) facing +y
-TABLES = [(0.0, 0.0, 0.0, 0.8, 0.5), (-1.3, -0.5, 60.0, 1.0, 0.5), (1.4, -0.6, 100.0, 0.8, 0.6)]
-START = (0.0, -1.4, 90.0)
 HEAD_YAWS = (-0.9, 0.0, 0.9)
-
-
-def three_tables(robots: dict[str, dict[str, float]]) -> World:
-    x, y, yaw, length, width = TABLES[0]
-    world = World(scenario_from_dict({
-        "room": {"width": 8.0, "depth": 8.0}, "robots": robots,
-        "table": {"x": x, "y": y, "yaw": yaw, "length": length, "width": width}}), 0)
-    for x, y, yaw, length, width in TABLES[1:]:
-        build_table(world._cid, TableSpec(x=x, y=y, yaw=yaw, length=length, width=width))
-    return world
 
 
 @pytest.fixture
 def world() -> Iterator[World]:
-    with three_tables({"r1": {"x": START[0], "y": START[1], "yaw": START[2]}}) as w:
+    with three_tables() as w:
         yield w
 
 
@@ -49,30 +34,6 @@ def look_around(world: World, name: str = "r1", pitch: float = 0.25) -> list[Tab
         world.advance(1.0)
         views.append((robot.image("forward"), robot.camera_model("forward")))
     return see_tables(views)
-
-
-def in_start_frame(x: float, y: float) -> tuple[float, float]:
-    """A world point in r1's odometry frame (its start pose; it has not moved)."""
-    sx, sy, syaw = START[0], START[1], math.radians(START[2])
-    c, s = math.cos(syaw), math.sin(syaw)
-    return (c * (x - sx) + s * (y - sy), -s * (x - sx) + c * (y - sy))
-
-
-def heading_error(a: float, b: float) -> float:
-    """Difference of two long-axis directions, modulo pi (degrees)."""
-    d = math.degrees(a - b) % 180.0
-    return min(d, 180.0 - d)
-
-
-def matches(seen: TableSeen, truth: tuple[float, float, float, float, float]) -> bool:
-    """Within what 160 x 120 pixels give 1.4 m away, the top seen at a grazing angle (a pixel
-    row of the top is several cm); sizes within the behaviours' `Look.size_tolerance`."""
-    x, y, yaw, length, width = truth
-    tx, ty = in_start_frame(x, y)
-    r = seen.rect
-    return (math.dist((r.x, r.y), (tx, ty)) < 0.08 and abs(r.length - length) < 0.1
-            and abs(r.width - width) < 0.1
-            and heading_error(r.axis, math.radians(yaw - START[2])) < 5.0)
 
 
 def test_three_tables_told_apart_with_place_heading_and_size(world: World) -> None:
