@@ -1,13 +1,12 @@
-"""Test-side scene of three tables in one room: the scenario's table and two more built into
-the pybullet world beside it (the scenario model holds one table), with the truth to judge by."""
+"""Test-side scene of three tables in one room (a scenario's `tables:`), with the truth to
+judge by."""
 
 from __future__ import annotations
 
 import math
 
 from sim.perception import TableSeen
-from sim.room import build_table
-from sim.scenario import TableSpec, scenario_from_dict
+from sim.scenario import scenario_from_dict
 from sim.world import World
 
 Truth = tuple[float, float, float, float, float]
@@ -20,13 +19,10 @@ START = (0.0, -1.4, 90.0)
 def three_tables(robots: dict[str, dict[str, float]] | None = None) -> World:
     """The world of TABLES, with r1 at START unless other robots are given."""
     robots = robots or {"r1": {"x": START[0], "y": START[1], "yaw": START[2]}}
-    x, y, yaw, length, width = TABLES[0]
-    world = World(scenario_from_dict({
-        "room": {"width": 8.0, "depth": 8.0}, "robots": robots,
-        "table": {"x": x, "y": y, "yaw": yaw, "length": length, "width": width}}), 0)
-    for x, y, yaw, length, width in TABLES[1:]:
-        build_table(world._cid, TableSpec(x=x, y=y, yaw=yaw, length=length, width=width))
-    return world
+    tables = [{"x": x, "y": y, "yaw": yaw, "length": length, "width": width}
+              for x, y, yaw, length, width in TABLES]
+    return World(scenario_from_dict({"room": {"width": 8.0, "depth": 8.0}, "robots": robots,
+                                     "tables": tables}), 0)
 
 
 def in_start_frame(x: float, y: float) -> tuple[float, float]:
