@@ -4,8 +4,9 @@ finds, write PNGs to docs/perception/, and (with --time) time each perception ca
 Usage: .venv/bin/python tools/perception_gallery.py [--size 320x240] [--out docs/perception]
        [--time]
 Colours in the pictures: yellow box = table blob, red dot = lowest pixel, cyan lines = Figure 5
-centre band and the 80 % row, magenta = the table top's rectangle (from the floor plan back into
-the image), green = floor-wall line, orange box = other robot, red line = the near edge (down).
+centre band and the 80 % row, magenta = each table top's rectangle (from the floor plan back into
+the image; the text gives it in the odometry frame), green = floor-wall line, orange box = other
+robot, red line = the near edge (down).
 """
 
 from __future__ import annotations
@@ -32,38 +33,48 @@ from sim.perception import (  # noqa: E402
     find_robots,
     floor_wall_line,
     near_edge,
+    see_tables,
     table_distance,
     table_rect,
     wall_to_side,
 )
+from sim.robot import Robot  # noqa: E402
 from sim.scenario import scenario_from_dict  # noqa: E402
 from sim.world import World  # noqa: E402
 
 Colour = tuple[int, int, int]
-# name: (room, table, robots, head yaw/pitch in degrees, camera)
-VIEWS: dict[str, tuple[dict[str, float], dict[str, float], dict[str, dict[str, float]],
+Tables = list[dict[str, float]]
+# name: (room, tables, robots, head yaw/pitch in degrees, camera)
+VIEWS: dict[str, tuple[dict[str, float], Tables, dict[str, dict[str, float]],
                        tuple[float, float], str]] = {
-    "far_2m": ({"width": 5, "depth": 5}, {}, {"r1": {"x": -1.81, "y": -1.66, "yaw": 50},
+    "far_2m": ({"width": 5, "depth": 5}, [{}], {"r1": {"x": -1.81, "y": -1.66, "yaw": 50},
                                               "r2": {"x": 1.3, "y": 1.0, "yaw": -140}}, (0, 0), "forward"),
-    "corner_0.8m": ({"width": 5, "depth": 5}, {}, {"r1": {"x": -0.97, "y": -0.82, "yaw": 45}},
+    "corner_0.8m": ({"width": 5, "depth": 5}, [{}], {"r1": {"x": -0.97, "y": -0.82, "yaw": 45}},
                     (0, 15), "forward"),
-    "look_left_at_corner": ({"width": 5, "depth": 5}, {}, {"r1": {"x": -0.97, "y": -0.82, "yaw": 45}},
+    "look_left_at_corner": ({"width": 5, "depth": 5}, [{}], {"r1": {"x": -0.97, "y": -0.82, "yaw": 45}},
                             (35, 15), "forward"),
-    "wall_over_table": ({"width": 6, "depth": 6}, {"x": 2.25, "y": 0.0, "yaw": 90},
+    "wall_over_table": ({"width": 6, "depth": 6}, [{"x": 2.25, "y": 0.0, "yaw": 90}],
                         {"r1": {"x": 0.5, "y": 0.05, "yaw": 0}}, (0, 0), "forward"),
-    "assistant_sees_leader": ({"width": 5, "depth": 5}, {},
+    "assistant_sees_leader": ({"width": 5, "depth": 5}, [{}],
                               {"r1": {"x": -1.6, "y": 0.1, "yaw": 0},
                                "r2": {"x": 0.65, "y": 0.0, "yaw": 180}},
                               (0, 5), "forward"),
-    "down_at_grip": ({"width": 4, "depth": 4}, {}, {"r1": {"x": 0.1, "y": -0.38, "yaw": 98}}, (0, 0), "down"),
+    "down_at_grip": ({"width": 4, "depth": 4}, [{}], {"r1": {"x": 0.1, "y": -0.38, "yaw": 98}},
+                     (0, 0), "down"),
+    "three_tables": ({"width": 8, "depth": 8},
+                     [{"x": 0.0, "y": 0.0}, {"x": -1.3, "y": -0.5, "yaw": 60, "length": 1.0},
+                      {"x": 1.4, "y": -0.6, "yaw": 100, "width": 0.6}],
+                     {"r1": {"x": 0.0, "y": -1.4, "yaw": 90}, "r2": {"x": 0.0, "y": -0.5, "yaw": -90}},
+                     (22, 14), "forward"),
 }
 
 
 def render(name: str, size: tuple[int, int]) -> tuple[np.ndarray, CameraModel]:
-    room, table, robots, (hy, hp), camera = VIEWS[name]
-    scenario = scenario_from_dict({"room": room, "table": table, "robots": robots})
+    room, tables, robots, (hy, hp), camera = VIEWS[name]
+    scenario = scenario_from_dict({"room": room, "tables": tables, "robots": robots})
     with World(scenario, 0, image_size=size) as world:
         robot = world.robots["r1"]
+        assert isinstance(robot, Robot)
         robot.set_head(math.radians(hy), math.radians(hp))
         world.advance(1.0)
         return robot.image(camera), robot.camera_model(camera)
@@ -111,10 +122,12 @@ def annotate_forward(image: np.ndarray, cam: CameraModel) -> np.ndarray:
         cv2.circle(out, _pt(ground.pixel), 3, (0, 0, 255), -1)
         text.append(f"table {ground.distance:.2f} m {math.degrees(ground.bearing):+.0f} deg"
                     + (" (clipped)" if ground.clipped else ""))
-    rect = table_rect(image, cam)
-    if rect.found:
-        _polyline(out, cam, rect.corners(), DEFAULT_CONFIG.table_top_height, (255, 0, 255), True)
-        text.append(f"top {rect.length:.2f} x {rect.width:.2f} m at ({rect.x:.2f}, {rect.y:.2f})")
+    for seen in see_tables([(image, cam)]):
+        rect = seen.rect
+        corners = [(float(x), float(y)) for x, y in cam.to_body(np.array(rect.corners()))]
+        _polyline(out, cam, corners, DEFAULT_CONFIG.table_top_height, (255, 0, 255), True)
+        text.append(f"table {rect.length:.2f} x {rect.width:.2f} m at ({rect.x:.2f}, {rect.y:.2f})"
+                    f" {math.degrees(rect.axis):+.0f} deg" + (" (clipped)" if seen.clipped else ""))
     for side in ("left", "right"):
         wall = wall_to_side(image, cam, side)
         if wall.found:
@@ -167,6 +180,7 @@ def _time_size(size: tuple[int, int]) -> dict[str, float]:
     return {"table_distance": _ms(lambda: table_distance(fwd, cam)),
             "find_robots (5 colours)": _ms(lambda: find_robots(fwd)),
             "table_rect": _ms(lambda: table_rect(fwd, cam)),
+            "see_tables": _ms(lambda: see_tables([(fwd, cam)])),
             "floor_wall_line": _ms(lambda: floor_wall_line(wall)),
             "wall_to_side": _ms(lambda: wall_to_side(wall, wcam, "left")),
             "near_edge": _ms(lambda: near_edge(down, dcam))}

@@ -42,7 +42,8 @@ class PerceptionConfig:
     # edges and tables
     min_edge_px_fraction: float = 0.04  # fewest columns (of image width) for a near-edge fit
     wall_min_run: int = 2              # wall pixels needed directly above a floor-wall boundary
-    table_gap: float = 0.3             # top-face pieces nearer than this (m) are one table
+    table_gap: float = 0.15            # top-face pieces nearer than this (m) are one table...
+    table_max_size: tuple[float, float] = (1.2, 0.8)  # ...if together no longer/wider (m)
 
 
 DEFAULT_CONFIG = PerceptionConfig()

@@ -12,7 +12,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 from tables_scene import START, TABLES, in_start_frame, matches, three_tables
 
-from sim.perception import components, top_face
+from sim.perception import PerceptionConfig, components, top_face
 from sim.perception.table_rect import TableRect
 from sim.perception.tables import Piece, TableSeen, group_pieces, pick_table, see_tables
 from sim.world import World
@@ -87,10 +87,20 @@ def test_pieces_group_by_gap_in_any_order(order: list[int], spacing: float) -> N
     """Two tables (0.2 m or more apart), each seen as two overlapping pieces: two groups in any order."""
     pieces = [Piece(square(0.0, 0.0, 0.2), False), Piece(square(0.1, 0.0, 0.2), True),
               Piece(square(spacing, 0.0, 0.2), False), Piece(square(spacing + 0.05, 0.1, 0.2), False)]
-    groups = group_pieces([pieces[i] for i in order], max_gap=0.15)
+    groups = group_pieces([pieces[i] for i in order], PerceptionConfig(table_gap=0.15))
     assert len(groups) == 2
     assert sorted(len(g.points) for g in groups) == [160, 160]
     assert sorted(g.clipped for g in groups) == [False, True]
+
+
+@pytest.mark.parametrize(("spacing", "one"), [(0.7, True), (1.0, False)])
+def test_pieces_a_robot_joins_are_one_table_if_no_larger_than_one(spacing: float, one: bool) -> None:
+    """Two 0.2 m pieces either side of a robot (the same bridge label), `spacing` apart: one
+    table up to `table_max_size`, beyond it two tables beside the robot."""
+    bridge = frozenset([(0, 1)])
+    pieces = [Piece(square(0.0, 0.0, 0.1), False, bridge), Piece(square(spacing, 0.0, 0.1), False, bridge)]
+    groups = group_pieces(pieces, PerceptionConfig(table_max_size=(1.0, 0.6)))
+    assert len(groups) == (1 if one else 2)
 
 
 @given(x=st.floats(-3, 3), y=st.floats(-3, 3), gate=st.floats(0.1, 2.0))
