@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import cv2
@@ -11,7 +12,8 @@ import numpy as np
 @dataclass(frozen=True)
 class FloorLine:
     """A line through (x0, y0) along the unit direction (dx, dy), with dy >= 0; `distance`
-    is the body centre's (the origin's) distance to it."""
+    is the body centre's (the origin's) distance to it and `normal` (rad, counter-clockwise
+    from forward) the direction from the body centre to its nearest point, square to it."""
 
     x0: float
     y0: float
@@ -20,8 +22,18 @@ class FloorLine:
     points: int
 
     @property
+    def offset(self) -> float:
+        """Signed: the line is (-dy, dx) . p = -offset."""
+        return self.x0 * self.dy - self.y0 * self.dx
+
+    @property
     def distance(self) -> float:
-        return abs(self.x0 * self.dy - self.y0 * self.dx)
+        return abs(self.offset)
+
+    @property
+    def normal(self) -> float:
+        nx, ny = (self.dy, -self.dx) if self.offset > 0 else (-self.dy, self.dx)
+        return math.atan2(ny, nx)
 
 
 def fit_floor_line(xs: np.ndarray, ys: np.ndarray) -> FloorLine:

@@ -24,11 +24,14 @@ from sim.perception.floor import fit_floor_line
 
 @dataclass(frozen=True)
 class WallSeen:
-    """The floor-wall line to one side: `distance` (m) from the body centre to it."""
+    """The floor-wall line to one side: `distance` (m) from the body centre to it, and `normal`
+    (rad, body frame, counter-clockwise from forward): the direction from the body centre to
+    its nearest point, square to the wall. A wall square to the side axis has normal +-pi/2."""
 
     found: bool
     distance: float = math.nan
     points: int = 0
+    normal: float = math.nan
 
 
 NO_WALL = WallSeen(False)
@@ -68,5 +71,5 @@ def wall_to_side(image: np.ndarray, camera: CameraModel, side: str,
         keep = ok & (off <= window)
         if np.count_nonzero(keep) >= max(3, min_points):
             line = fit_floor_line(xs[keep], ys[keep])
-            return WallSeen(True, distance=line.distance, points=line.points)
+            return WallSeen(True, distance=line.distance, points=line.points, normal=line.normal)
     return NO_WALL

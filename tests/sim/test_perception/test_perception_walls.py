@@ -1,5 +1,6 @@
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import Any
 
@@ -46,6 +47,7 @@ def test_wall_to_the_left_of_a_robot_facing_along_it(scene: SceneFactory, size: 
     seen = wall_to_side(s.image(), s.camera(), "left")
     assert seen.found
     assert seen.distance == pytest.approx(WALL_X - 0.5, abs=0.05)
+    assert seen.normal == pytest.approx(math.pi / 2, abs=0.03)       # square to the side axis
 
 
 def test_no_wall_in_a_blank_image(scene: SceneFactory) -> None:
