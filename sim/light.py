@@ -1,4 +1,4 @@
-"""Light robots: a camera-less cylinder that drives by velocity commands, for teams of tens (the
+"""Light robots: a camera-less cylinder (drawn as boxes) that drives by velocity commands, for teams of tens (the
 TARARC allocation experiments). No head, no arms, no cameras: it senses its odometry (in the
 room's frame, from the start pose the scenario tells it), its battery and bumps, and hears the
 radio. It collides with walls, tables and other robots like the humanoid does."""
@@ -39,11 +39,15 @@ def light_motion(speed: float | None) -> MotionProfile:
 def build_light(cid: int, g: LightGeometry, colour: tuple[float, float, float], pose: Pose) -> Chassis:
     col = p.createCollisionShape(p.GEOM_CYLINDER, radius=g.radius, height=g.height,
                                  collisionFramePosition=[0, 0, g.height / 2], physicsClientId=cid)
+    # Seen as boxes (two squares a quarter-turn apart, and a dark nose), as every other body of the
+    # world is: the robots' cameras draw boxes.
+    side, half_h = g.radius * 0.85, g.height / 2
+    turned = p.getQuaternionFromEuler([0.0, 0.0, math.pi / 4])
     vis = p.createVisualShapeArray(
-        [p.GEOM_CYLINDER, p.GEOM_BOX], radii=[g.radius, 0.0], lengths=[g.height, 0.0],
-        halfExtents=[[0, 0, 0], [g.radius * 0.45, 0.02, 0.01]],
-        visualFramePositions=[[0, 0, g.height / 2], [g.radius * 0.5, 0, g.height + 0.01]],
-        rgbaColors=[[*colour, 1.0], [0.1, 0.1, 0.1, 1.0]], physicsClientId=cid)
+        [p.GEOM_BOX] * 3, halfExtents=[[side, side, half_h], [side, side, half_h], [g.radius * 0.45, 0.02, 0.01]],
+        visualFramePositions=[[0, 0, half_h], [0, 0, half_h], [g.radius * 0.5, 0, g.height + 0.01]],
+        visualFrameOrientations=[[0, 0, 0, 1], list(turned), [0, 0, 0, 1]],
+        rgbaColors=[[*colour, 1.0], [*colour, 1.0], [0.1, 0.1, 0.1, 1.0]], physicsClientId=cid)
     x, y, yaw = pose
     orn = p.getQuaternionFromEuler([0.0, 0.0, yaw])
     body = int(p.createMultiBody(g.mass, col, vis, basePosition=[x, y, g.hover], baseOrientation=orn,
