@@ -1,5 +1,5 @@
-"""Light robots: a camera-less cylinder (drawn as boxes) that drives by velocity commands, for teams of tens (the
-TARARC allocation experiments). No head, no arms, no cameras: it senses its odometry (in the
+"""Light robots: a camera-less cylinder (drawn as boxes) that drives by velocity commands, for
+teams of tens (the TARARC allocation experiments). No head, no arms, no cameras: it senses its odometry (in the
 room's frame, from the start pose the scenario tells it), its battery and bumps, and hears the
 radio. It collides with walls, tables and other robots like the humanoid does."""
 
@@ -44,7 +44,8 @@ def build_light(cid: int, g: LightGeometry, colour: tuple[float, float, float], 
     side, half_h = g.radius * 0.85, g.height / 2
     turned = p.getQuaternionFromEuler([0.0, 0.0, math.pi / 4])
     vis = p.createVisualShapeArray(
-        [p.GEOM_BOX] * 3, halfExtents=[[side, side, half_h], [side, side, half_h], [g.radius * 0.45, 0.02, 0.01]],
+        [p.GEOM_BOX] * 3,
+        halfExtents=[[side, side, half_h], [side, side, half_h], [g.radius * 0.45, 0.02, 0.01]],
         visualFramePositions=[[0, 0, half_h], [0, 0, half_h], [g.radius * 0.5, 0, g.height + 0.01]],
         visualFrameOrientations=[[0, 0, 0, 1], list(turned), [0, 0, 0, 1]],
         rgbaColors=[[*colour, 1.0], [*colour, 1.0], [0.1, 0.1, 0.1, 1.0]], physicsClientId=cid)
