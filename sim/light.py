@@ -1,7 +1,7 @@
 """Light robots: a camera-less cylinder (drawn as boxes) that drives by velocity commands, for
-teams of tens (the TARARC allocation experiments). No head, no arms, no cameras: it senses its odometry (in the
-room's frame, from the start pose the scenario tells it), its battery and bumps, and hears the
-radio. It collides with walls, tables and other robots like the humanoid does."""
+teams of tens (the TARARC allocation experiments). No head, no arms, no cameras: it senses its
+odometry (in the room's frame, from the start pose the scenario tells it), its battery and bumps,
+and hears the radio. It collides with walls, tables and other robots like the humanoid does."""
 
 from __future__ import annotations
 
