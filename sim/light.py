@@ -74,6 +74,18 @@ class LightRobot(Base):
         """A light body has no hands."""
         return False
 
+    # Teams of tens: the leash is kept once per control tick, not every physics step (one pybullet
+    # call a step instead of two), so a blocked light robot may lead its body by a tick's travel.
+    def _before_advance(self, dt: float) -> None:
+        if self._cmd != (0.0, 0.0, 0.0):
+            self._target = self._leashed(self._target, dt)
+            self._push_target()
+
+    def _pre_step(self, dt: float) -> None:
+        if self._cmd != (0.0, 0.0, 0.0):
+            self._target = self._ahead(dt)
+            self._push_target()
+
 
 def told_pose(x: float, y: float, yaw_degrees: float) -> Pose:
     return (x, y, math.radians(yaw_degrees))

@@ -85,6 +85,8 @@ class World:
         start = self._steps
         robots = list(self.robots.values())
         raised = any(r._arms_active() for r in robots if isinstance(r, Robot))  # commands hold over the span
+        for robot in robots:
+            robot._before_advance(dt)
         while self._steps < end:
             for robot in robots:
                 robot._pre_step(dt)
