@@ -1,7 +1,8 @@
 """The inputs the sim world declares (SPEC 12): what machines read as `in.NAME`.
 
 Declarations only, so that `hfsm-run --check` knows them without starting the simulator; the
-values come from `behaviours.senses`, from what a robot senses.
+values come from `behaviours.senses`, from what a robot senses (`radio_delay` from what its radio
+hears, in `behaviours.simworld`).
 """
 
 from __future__ import annotations
@@ -35,8 +36,23 @@ SIM_INPUTS: Mapping[str, InputSpec] = {
         InputSpec(
             "pose",
             "dict",
-            "odometry in the robot's own start frame: {x: metres, y: metres, yaw: degrees, left positive}",
+            "odometry, {x: metres, y: metres, yaw: degrees, left positive}: in the robot's own start "
+            "frame (full body), or in the room's frame from the start pose the scenario tells it "
+            "(light body)",
+        ),
+        InputSpec(
+            "radio_delay",
+            "float",
+            "seconds the latest message or barrier notice this robot heard took on the radio (its "
+            "sender's time stamp to its arrival, by the robots' synchronised clocks); 0 before any",
         ),
         InputSpec("battery", "float", "the battery's charge, 0 (empty: the robot fails) to 1 (full)"),
+        InputSpec(
+            "tasks",
+            "list",
+            "the tasks the team is given, in scenario order, tables then targets: [{id, kind: "
+            "table|target, x, y: metres in the room's frame (a table's start centre), difficulty: "
+            "0..1, priority: 1 first}]",
+        ),
     )
 }

@@ -145,6 +145,8 @@ class Calls(Cancelling):
             return
         if frame.state.save and event.outputs:
             self._save(frame, frame.state.save, event.outputs)
+            if frame.state.watches:
+                self.wake = True  # a watch may read what the attempt saved
 
     def _count_of(self, times: Any, frame: Frame, what: str) -> int | Event:
         if times.__class__ is int:
