@@ -6,7 +6,7 @@ from typing import Any
 
 from hfsm.expr import ExprValueError
 from hfsm.runtime.agent import Event, Frame, Region
-from hfsm.runtime.builtins import STARTERS
+from hfsm.runtime.builtins import STARTERS, Wait
 from hfsm.runtime.cancel import Cancelling
 from hfsm.runtime.primitives import PrimitiveActivity, RunContext
 from hfsm.runtime.program import RMachine, resolve_params, timer_ticks
@@ -44,6 +44,9 @@ class Calls(Cancelling):
 
         `with` reads `frame`. Returns what it ended with at once, or None while it runs.
         """
+        if callee.wait_ticks:  # start_wait's work, without its calls
+            where.below = Wait(self.tick + callee.wait_ticks)
+            return None
         params = callee.params if callee.params is not None else self._params(callee, frame)
         if params.__class__ is Event:
             return params
@@ -147,10 +150,7 @@ class Calls(Cancelling):
                 self.emit(frame.agent, frame.path(), "error", message=event.error)
             return
         if frame.state.save and event.outputs:
-            for var, output in frame.state.save:
-                if output in event.outputs:
-                    frame.vars[var] = event.outputs[output]
-                    frame.vars_shown = False
+            self._save(frame, frame.state.save, event.outputs)
             if frame.state.watches:
                 self.wake = True  # a watch may read what the attempt saved
 
