@@ -9,10 +9,12 @@ import numpy as np
 import pybullet as p
 
 from sim.profile import CAMERAS, BodyGeometry, CameraSpec
+from sim.raster import ROOM_LIGHT, Camera
 
 NEAR, FAR = 0.01, 30.0
-LIGHT = {"lightDirection": [0.4, 0.3, 1.0], "lightColor": [1.0, 1.0, 1.0],
-         "lightAmbientCoeff": 0.65, "lightDiffuseCoeff": 0.35, "lightSpecularCoeff": 0.0}
+LIGHT = {"lightDirection": list(ROOM_LIGHT.direction), "lightColor": [1.0, 1.0, 1.0],
+         "lightAmbientCoeff": ROOM_LIGHT.ambient, "lightDiffuseCoeff": ROOM_LIGHT.diffuse,
+         "lightSpecularCoeff": 0.0}  # ROOM_LIGHT as pybullet's getCameraImage takes it
 
 
 def rot_z(a: float) -> np.ndarray:
@@ -101,10 +103,20 @@ def view_matrices(model: CameraModel, base_pos: tuple[float, float, float],
     return list(view), list(proj)
 
 
-def render(cid: int, model: CameraModel, base_pos: tuple[float, float, float],
-           base_orn: tuple[float, float, float, float], *, segmentation: bool = False
-           ) -> tuple[np.ndarray, np.ndarray | None]:
-    """RGB (H x W x 3 uint8) from the tiny renderer, shadows off; the body-id mask if asked."""
+def world_camera(model: CameraModel, base_pos: tuple[float, float, float],
+                 base_orn: tuple[float, float, float, float]) -> Camera:
+    """The camera of `model` on a body at the given world pose, as the rasteriser takes it."""
+    r_base = np.array(p.getMatrixFromQuaternion(base_orn)).reshape(3, 3)
+    eye = np.asarray(base_pos) + r_base @ np.asarray(model.position)
+    return Camera(eye, r_base @ model.rotation, model.width, model.height, model.fx, model.fy,
+                  model.cx, model.cy, NEAR)
+
+
+def render_tiny(cid: int, model: CameraModel, base_pos: tuple[float, float, float],
+                base_orn: tuple[float, float, float, float], *, segmentation: bool = False
+                ) -> tuple[np.ndarray, np.ndarray | None]:
+    """The same picture from pybullet's tiny renderer (shadows off): what `Rasteriser` is checked
+    against, 5-10 times slower."""
     view, proj = view_matrices(model, base_pos, base_orn)
     flags = 0 if segmentation else p.ER_NO_SEGMENTATION_MASK
     _, _, rgba, _, seg = p.getCameraImage(

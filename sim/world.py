@@ -13,6 +13,7 @@ from sim.body import build_robot
 from sim.lifting import Lifting
 from sim.profile import DEFAULT_BODY, DEFAULT_MOTION, ROBOT_COLOURS, BodyGeometry, MotionProfile
 from sim.radio import Radio
+from sim.raster import Rasteriser
 from sim.robot import Robot
 from sim.room import build_room, build_table
 from sim.scenario import Scenario
@@ -49,10 +50,12 @@ class World:
             bodies = {name: build_robot(cid, body, motion, ROBOT_COLOURS[i % len(ROBOT_COLOURS)],
                                         starts[name]) for i, name in enumerate(starts)}
             self._lifting = Lifting(cid, table, bodies, dt=1.0 / physics_hz)
+            cameras = Rasteriser(cid)  # one scene for every robot's cameras
             self.robots: dict[str, Robot] = {
                 name: Robot(cid, name, b, motion, np.random.default_rng([seed, i, 0x0D0]),
                             image_size, partial(self._lifting.holding, name),
-                            partial(self._lifting.load, name), Battery(scenario.battery))
+                            partial(self._lifting.load, name), Battery(scenario.battery),
+                            rasteriser=cameras)
                 for i, (name, b) in enumerate(bodies.items())}
             self._lifting.bind(self.robots)
             self.truth = Truth(cid, scenario.room, room, table, bodies)
