@@ -1,15 +1,19 @@
-"""The robots' camera images: the world's boxes drawn with OpenCV into a numpy depth buffer.
+"""The robots' camera images: the world's boxes drawn into a numpy depth buffer.
 
 Every visible body of the world is a set of boxes of one colour each (sim.room, sim.body). This
 draws them as pybullet's tiny renderer does (its flat light: ambient plus diffuse, no specular, no
 shadows; its colours to the unit; its sampling of pixel (i, j) at image point (i, j + 1); a white
-sky), at a fraction of its cost, which grows with every pixel a surface covers (~250 ns a pixel,
-50-100 ms an image at 640x480). The two differ on the odd pixel along edges (see
-tests/sim/test_raster.py). Each face seen from the front is cut at the near plane, filled by
-`cv2.fillConvexPoly` inside its bounding box and kept where it is nearer than what is drawn: a
-plane's inverse depth is affine in the image, so a face's depth is one broadcast sum.
-"""
+sky) at a fraction of its cost, which grows with every pixel a surface covers (~250 ns a pixel,
+50-100 ms an image at 640x480). The two differ on the odd pixel along an edge (tests/sim/
+test_raster.py). Each face seen from the front is cut at the near plane; its pixels are, row by
+row, the span between its edges, kept where it is nearer than what is drawn (a plane's inverse
+depth is affine in the image: one broadcast sum a face).
 
+Why not a library: pybullet's other renderer, pyrender, moderngl and Open3D need an OpenGL
+context (EGL or OSMesa from the system, not from pip) and light and sample otherwise, so the
+robots would see other pictures; OpenCV's `fillConvexPoly` fills by pixel area, not at points,
+which moved every edge by half a pixel (1-2 % of the pixels of an image).
+"""
 from __future__ import annotations
 
 from dataclasses import dataclass
