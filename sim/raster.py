@@ -17,6 +17,7 @@ which moved every edge by half a pixel (1-2 % of the pixels of an image).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Protocol
 
 import numpy as np
 import pybullet as p
@@ -55,6 +56,11 @@ class Camera:
     cx: float
     cy: float
     near: float
+
+
+class Renderer(Protocol):
+    def render(self, camera: Camera, *, segmentation: bool = False
+               ) -> tuple[np.ndarray, np.ndarray | None]: ...
 
 
 @dataclass(frozen=True)

@@ -14,7 +14,7 @@ from sim.body import ARMS, HEAD, NECK, RobotBody, drive_joint, yaw_of
 from sim.camera import CameraModel, camera_model, camera_spec, world_camera
 from sim.odometry import Odometry, wrap
 from sim.profile import MotionProfile
-from sim.raster import Rasteriser
+from sim.raster import Rasteriser, Renderer
 
 LEASH_XY, LEASH_YAW = 0.02, 0.1
 UNWIND_XY, UNWIND_YAW = 0.01, 0.05
@@ -79,12 +79,12 @@ class Robot:
                  rng: np.random.Generator, image_size: tuple[int, int],
                  holding: Callable[[], bool],
                  load: Callable[[], tuple[np.ndarray, np.ndarray]],
-                 battery: Battery | None = None, *, rasteriser: Rasteriser | None = None) -> None:
+                 battery: Battery | None = None, *, cameras: Renderer | None = None) -> None:
         self.name = name
         self.profile = motion
         self._cid, self._body, self._g = cid, body, body.geometry
         self._image_size = image_size
-        self._rasteriser = rasteriser or Rasteriser(cid)
+        self._cameras = cameras or Rasteriser(cid)
         self._holding = holding
         self._load = load
         self._cmd = (0.0, 0.0, 0.0)
@@ -166,7 +166,7 @@ class Robot:
     def _render(self, camera: str, *, segmentation: bool) -> tuple[np.ndarray, np.ndarray | None]:
         pos, orn = p.getBasePositionAndOrientation(self._body.body, physicsClientId=self._cid)
         view = world_camera(self.camera_model(camera), pos, orn)
-        return self._rasteriser.render(view, segmentation=segmentation)
+        return self._cameras.render(view, segmentation=segmentation)
 
     # arms
     def arms_lower(self) -> None:

@@ -10,6 +10,7 @@ import pybullet as p
 
 from sim.battery import Battery
 from sim.body import build_robot
+from sim.camera import TinyRenderer
 from sim.lifting import Lifting
 from sim.profile import DEFAULT_BODY, DEFAULT_MOTION, ROBOT_COLOURS, BodyGeometry, MotionProfile
 from sim.radio import Radio
@@ -35,7 +36,7 @@ class World:
                  image_size: tuple[int, int] = (160, 120), radio_latency: float = 0.1,
                  radio_loss: float = 0.0, success_distance: float = 0.15,
                  recorder: Recorder | None = None, motion: MotionProfile = DEFAULT_MOTION,
-                 body: BodyGeometry = DEFAULT_BODY) -> None:
+                 body: BodyGeometry = DEFAULT_BODY, renderer: str = "raster") -> None:
         self.scenario, self.seed, self.physics_hz = scenario, seed, physics_hz
         self.image_size = image_size
         self._cid: int | None = p.connect(p.DIRECT)
@@ -50,12 +51,13 @@ class World:
             bodies = {name: build_robot(cid, body, motion, ROBOT_COLOURS[i % len(ROBOT_COLOURS)],
                                         starts[name]) for i, name in enumerate(starts)}
             self._lifting = Lifting(cid, table, bodies, dt=1.0 / physics_hz)
-            cameras = Rasteriser(cid)  # one scene for every robot's cameras
+            # one renderer for every robot's cameras; "tiny" (pybullet's) only to compare with
+            cameras = TinyRenderer(cid) if renderer == "tiny" else Rasteriser(cid)
             self.robots: dict[str, Robot] = {
                 name: Robot(cid, name, b, motion, np.random.default_rng([seed, i, 0x0D0]),
                             image_size, partial(self._lifting.holding, name),
                             partial(self._lifting.load, name), Battery(scenario.battery),
-                            rasteriser=cameras)
+                            cameras=cameras)
                 for i, (name, b) in enumerate(bodies.items())}
             self._lifting.bind(self.robots)
             self.truth = Truth(cid, scenario.room, room, table, bodies)

@@ -11,7 +11,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from sim.camera import render_tiny
+from sim.camera import TinyRenderer, world_camera
 from sim.raster import SKY, Rasteriser, _spans
 from sim.robot import Robot
 from sim.room import _static_box
@@ -22,8 +22,8 @@ TWO = {"r1": {"x": -1.0, "y": -0.3, "yaw": 20.0}, "r2": {"x": 1.0, "y": 0.4, "ya
 
 def _both(robot: Robot, camera: str) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     pos, orn = p.getBasePositionAndOrientation(robot._body.body, physicsClientId=robot._cid)
-    tiny, tiny_mask = render_tiny(robot._cid, robot.camera_model(camera), pos, orn,
-                                  segmentation=True)
+    view = world_camera(robot.camera_model(camera), pos, orn)
+    tiny, tiny_mask = TinyRenderer(robot._cid).render(view, segmentation=True)
     ours, mask = robot._render(camera, segmentation=True)
     assert tiny_mask is not None and mask is not None
     return tiny, ours, tiny_mask, mask
@@ -76,7 +76,7 @@ def test_a_new_rasteriser_reads_the_scene_afresh(world_factory: Callable[..., Wo
     world = world_factory(TWO)
     robot = world.robots["r1"]
     pictures = [robot.image("down")]
-    robot._rasteriser = Rasteriser(world.client)
+    robot._cameras = Rasteriser(world.client)
     pictures.append(robot.image("down"))
     assert (pictures[0] == pictures[1]).all()
 
