@@ -154,8 +154,12 @@ class SimWorld:
         print(line, end=end, file=sys.stderr, flush=True)
 
     def report(self) -> dict[str, Any]:
+        """The scenario's task and its score; nothing for a scenario with no task."""
+        task = self.world.scenario.task
+        if task is None:
+            return {}
         score = self.world.score()
-        return {"score": {k: score[k] for k in SCORE_KEYS}}
+        return {"task": task, "score": {k: score[k] for k in SCORE_KEYS}}
 
     def close(self) -> list[str]:
         if self.progress_every and sys.stderr.isatty():

@@ -10,7 +10,7 @@ import math
 from collections.abc import Mapping
 from importlib import resources
 from pathlib import Path
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 import numpy as np
 import yaml
@@ -26,6 +26,7 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 DEFAULT_SCENARIO = "opposite_long_side"
+Task = Literal["table_to_wall"]  # what a run is scored on (sim.scorer): the paper's task
 RobotName = Annotated[str, StringConstraints(pattern=r"^[a-z][a-z0-9_]*$")]
 
 
@@ -84,6 +85,7 @@ class FailureSpec(_Strict):
 
 class Scenario(_Strict):
     description: str = ""
+    task: Task | None = Field(None, description="what the run is scored on; absent: nothing")
     room: Room = Room()
     table: TableSpec = TableSpec()
     robots: dict[RobotName, RobotStart] = Field(min_length=1, max_length=5)
