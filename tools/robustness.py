@@ -52,7 +52,8 @@ def draw(rng: random.Random, move_table: bool, clearance: float) -> dict[str, An
         if apart and _clear_of_table(x, y, table, clearance):
             robots[f"r{len(robots) + 1}"] = {"x": x, "y": y, "yaw": round(rng.uniform(-180, 180), 1)}
     return {"description": "a random held-out start", "task": "table_to_wall",
-            "room": {"width": ROOM, "depth": ROOM}, "table": table, "robots": robots, "jitter": {"position": 0.0, "yaw": 0.0}}
+            "room": {"width": ROOM, "depth": ROOM}, "table": table, "robots": robots,
+            "jitter": {"position": 0.0, "yaw": 0.0}}
 
 
 def main(argv: list[str] | None = None) -> int:
