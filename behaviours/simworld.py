@@ -19,10 +19,12 @@ from hfsm.primitive import Message
 from hfsm.runtime.program import span_ticks
 from hfsm.world import InputSpec
 from hfsm.yamlio import read_mapping
-from sim import Robot, Scenario, World, resolve
+from sim import Scenario, World, resolve
 from sim.recorder import Recorder
+from sim.team import AnyRobot
 
-SCORE_KEYS = ("success", "table_wall_distance", "dropped", "robot_collisions", "time")
+SCORE_KEYS = ("success", "table_wall_distance", "dropped", "robot_collisions", "time")  # table_to_wall
+ROBOT_KEYS = ("robot_collisions", "time")  # a scenario with no task
 
 
 def load_scenario(name_or_path: str) -> tuple[Scenario, str]:
@@ -81,6 +83,7 @@ class SimWorld:
         self._outputs = list(outputs)
         self._next_progress = progress_every
         self._senses: dict[str, Senses] = {}
+        self._failures = world.scenario.failure_times(world.seed)
 
     @property
     def outputs(self) -> list[Path]:
@@ -95,7 +98,7 @@ class SimWorld:
         if self._recorder is not None:
             self.world.record(self._recorder)
 
-    def handle(self, agent: str) -> Robot:
+    def handle(self, agent: str) -> AnyRobot:
         return self.world.robots[agent]
 
     def inputs(self) -> Mapping[str, InputSpec]:
@@ -105,7 +108,7 @@ class SimWorld:
         senses = self._senses.get(agent)
         if senses is None:
             own = list(self.world.robots).index(agent)  # robots wear the colours in scenario order
-            senses = self._senses[agent] = Senses(self.world.robots[agent], own)
+            senses = self._senses[agent] = Senses(self.world.robots[agent], own, self.world.scenario.tasks())
         return senses.read(name, tick)
 
     def post(self, message: Message) -> None:
@@ -137,10 +140,11 @@ class SimWorld:
         return Labels(self.world.labels)
 
     def failures(self, tick: int) -> Sequence[tuple[str, str]]:
-        """The scenario's failures due now, and robots whose battery is empty."""
-        due = [(f.robot, f.reason) for f in self.world.scenario.failures if span_ticks(f.at, self.dt) == tick]
+        """The scenario's failures due now (`at:` times and the seeded `rate:` ones), and robots
+        whose battery is empty."""
+        due = [(name, reason) for at, name, reason in self._failures if span_ticks(at, self.dt) == tick]
         for name, robot in self.world.robots.items():
-            if robot.battery() <= 0.0 and not robot.failed:
+            if robot.battery_empty() and not robot.failed:
                 due.append((name, "battery empty"))
         return due
 
@@ -154,11 +158,12 @@ class SimWorld:
         print(line, end=end, file=sys.stderr, flush=True)
 
     def report(self) -> dict[str, Any]:
-        """The scenario's task and its score; nothing for a scenario with no task."""
+        """The scenario's task and its score; for a scenario with no task, only what the robots did
+        (collisions between them, the time), nothing about furniture."""
+        score = self.world.score()
         task = self.world.scenario.task
         if task is None:
-            return {}
-        score = self.world.score()
+            return {"score": {k: score[k] for k in ROBOT_KEYS}}
         return {"task": task, "score": {k: score[k] for k in SCORE_KEYS}}
 
     def close(self) -> list[str]:

@@ -66,7 +66,7 @@ def run_trial(spec: TrialSpec) -> TrialResult:
             stack.callback(trace.close)
         options = RunOptions(top.name, world.agent_names(), params, spec.seed, spec.max_time)
         result = run(Program(loaded.machines, registry, spec.dt), world, options, trace)
-        score = world.report().get("score", {})  # a scenario with no task scores nothing
+        score = world.report()["score"]
     seconds = {a: {b: s.ticks * spec.dt for b, s in t.items()} for a, t in result.stats.items()}
     calls = {a: {b: s.calls for b, s in t.items()} for a, t in result.stats.items()}
     outcomes = {a: r.outcome for a, r in result.agents.items()}

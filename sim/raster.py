@@ -1,21 +1,25 @@
-"""The robots' camera images: the world's boxes drawn into a numpy depth buffer.
+"""The robots' camera images: the world's boxes and cylinders drawn into a numpy depth buffer.
 
-Every visible body of the world is a set of boxes of one colour each (sim.room, sim.body). This
-draws them as pybullet's tiny renderer does (its flat light: ambient plus diffuse, no specular, no
-shadows; its colours to the unit; its sampling of pixel (i, j) at image point (i, j + 1); a white
-sky) at a fraction of its cost, which grows with every pixel a surface covers (~250 ns a pixel,
-50-100 ms an image at 640x480). The two differ on the odd pixel along an edge (tests/sim/
-test_raster.py). Each face seen from the front is cut at the near plane; its pixels are, row by
-row, the span between its edges, kept where it is nearer than what is drawn (a plane's inverse
-depth is affine in the image: one broadcast sum a face).
+Every visible body of the world is a set of boxes (sim.room, sim.body) or a cylinder (sim.light)
+of one colour each. This draws them as pybullet's tiny renderer does (its flat light: ambient
+plus diffuse, no specular, no shadows; its colours to the unit; its sampling of pixel (i, j) at
+image point (i, j + 1); a white sky) at a fraction of its cost, which grows with every pixel a
+surface covers (~250 ns a pixel, 50-100 ms an image at 640x480). The two differ on the odd pixel
+along an edge (tests/sim/test_raster.py), and on cylinders: 32 flat sides here, the same
+silhouette and hue, where the tiny renderer shades them smoothly. Each face seen from the front
+is cut at the near plane; its pixels are, row by row, the span between its edges, kept where it
+is nearer than what is drawn (a plane's inverse depth is affine in the image: one broadcast sum
+a face).
 
 Why not a library: pybullet's other renderer, pyrender, moderngl and Open3D need an OpenGL
 context (EGL or OSMesa from the system, not from pip) and light and sample otherwise, so the
 robots would see other pictures; OpenCV's `fillConvexPoly` fills by pixel area, not at points,
 which moved every edge by half a pixel (1-2 % of the pixels of an image).
 """
+
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -28,6 +32,7 @@ _SIGNS = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-
 _FACES = np.array([[4, 6, 7, 5], [0, 1, 3, 2], [2, 3, 7, 6], [0, 4, 5, 1], [1, 5, 7, 3],
                    [0, 2, 6, 4]])
 _NORMALS = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], float)
+SIDES = 32  # a cylinder is drawn as a prism of this many flat sides (the tiny renderer's count)
 
 
 @dataclass(frozen=True)
@@ -65,28 +70,57 @@ class Renderer(Protocol):
 
 @dataclass(frozen=True)
 class _Part:
-    """The boxes of one link of a body (-1: its base), in that link's frame."""
+    """The faces of one link of a body (-1: its base), in that link's frame."""
 
     body: int
     link: int
-    corners: np.ndarray  # boxes x 8 x 3
-    base_colours: np.ndarray  # boxes x 3: the box's colour on a white texture, 0..255
+    quads: np.ndarray  # faces x 4 corners x 3 (a face of fewer corners repeats its last)
+    normals: np.ndarray  # faces x 3, outward
+    base_colours: np.ndarray  # faces x 3: the shape's colour on a white texture, 0..255
+
+
+def _box(size: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    return (_SIGNS * size / 2)[_FACES], _NORMALS
+
+
+def _cylinder(length: float, radius: float) -> tuple[np.ndarray, np.ndarray]:
+    """A prism of SIDES flat sides about z, its two caps cut into quads fanned from one corner."""
+    angle = 2 * math.pi * np.arange(SIDES) / SIDES
+    ring = np.stack([radius * np.cos(angle), radius * np.sin(angle)], axis=1)
+    low, high = (np.column_stack([ring, np.full(SIDES, z)]) for z in (-length / 2, length / 2))
+    nxt = np.roll(np.arange(SIDES), -1)
+    sides = np.stack([low, low[nxt], high[nxt], high], axis=1)
+    middle = angle + math.pi / SIDES
+    side_normals = np.column_stack([np.cos(middle), np.sin(middle), np.zeros(SIDES)])
+    fan = [[0, i, min(i + 1, SIDES - 1), min(i + 2, SIDES - 1)] for i in range(1, SIDES - 1, 2)]
+    caps = np.concatenate([high[fan], low[fan]])
+    cap_normals = np.repeat([[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]], len(fan), axis=0)
+    return np.concatenate([sides, caps]), np.concatenate([side_normals, cap_normals])
 
 
 def scene_parts(cid: int) -> list[_Part]:
-    """The boxes of every body of the client, grouped by link. Other shapes are skipped: the only
-    one in the world is the small sphere pybullet shows at a robot's neck, hidden inside it."""
-    groups: dict[tuple[int, int], tuple[list[np.ndarray], list[np.ndarray]]] = {}
+    """The faces of every body of the client, grouped by link: boxes and cylinders. Spheres are
+    skipped: the only one is the small sphere pybullet shows at a robot's neck, hidden inside it."""
+    groups: dict[tuple[int, int], tuple[list[np.ndarray], list[np.ndarray], list[np.ndarray]]] = {}
     for index in range(p.getNumBodies(physicsClientId=cid)):
         body = p.getBodyUniqueId(index, physicsClientId=cid)
         for shape in p.getVisualShapeData(body, physicsClientId=cid):
-            if shape[2] != p.GEOM_BOX or shape[7][3] == 0.0:
+            if shape[7][3] == 0.0:
+                continue
+            if shape[2] == p.GEOM_BOX:
+                quads, normals = _box(np.asarray(shape[3]))
+            elif shape[2] == p.GEOM_CYLINDER:
+                quads, normals = _cylinder(shape[3][0], shape[3][1])
+            else:
                 continue
             rot = np.array(p.getMatrixFromQuaternion(shape[6])).reshape(3, 3)
-            corners, colours = groups.setdefault((body, shape[1]), ([], []))
-            corners.append(_SIGNS * (np.asarray(shape[3]) / 2) @ rot.T + np.asarray(shape[5]))
-            colours.append(np.floor(np.float32(255.0) * np.asarray(shape[7][:3], np.float32)))
-    return [_Part(body, link, np.stack(c), np.stack(k)) for (body, link), (c, k) in groups.items()]
+            faces, outward, colours = groups.setdefault((body, shape[1]), ([], [], []))
+            faces.append(quads @ rot.T + np.asarray(shape[5]))
+            outward.append(normals @ rot.T)
+            colour = np.floor(np.float32(255.0) * np.asarray(shape[7][:3], np.float32))
+            colours.append(np.broadcast_to(colour, (len(quads), 3)))
+    return [_Part(body, link, np.concatenate(q), np.concatenate(n), np.concatenate(c))
+            for (body, link), (q, n, c) in groups.items()]
 
 
 class Rasteriser:
@@ -110,29 +144,28 @@ class Rasteriser:
     def _faces(self, camera: Camera) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """Every face seen from the front: corners in the camera frame (F x 4 x 3), normals in the
         camera frame (F x 3), colours (F x 3 uint8) and body ids (F)."""
-        corners, normals, colours, bodies = [], [], [], []
+        quads, normals, colours, bodies = [], [], [], []
         for part in self._scene():
             if part.link < 0:
                 pos, orn = p.getBasePositionAndOrientation(part.body, physicsClientId=self._cid)
             else:
                 pos, orn = p.getLinkState(part.body, part.link, physicsClientId=self._cid)[:2]
             rot = np.array(p.getMatrixFromQuaternion(orn)).reshape(3, 3)
-            corners.append(part.corners @ rot.T + pos)
-            normals.append(np.broadcast_to(_NORMALS @ rot.T, (len(part.corners), 6, 3)))
+            quads.append(part.quads @ rot.T + pos)
+            normals.append(part.normals @ rot.T)
             colours.append(part.base_colours)
-            bodies.append(np.full(len(part.corners), part.body))
-        world = np.concatenate(corners)[:, _FACES]  # boxes x 6 x 4 x 3
-        normal = np.concatenate(normals)  # boxes x 6 x 3
-        front = np.einsum("bfk,bfk->bf", world[:, :, 0] - camera.eye, normal) < 0.0
-        lit = self._shade(normal, np.concatenate(colours))  # boxes x 6 x 3
-        face_bodies = np.broadcast_to(np.concatenate(bodies)[:, None], front.shape)
-        return ((world[front] - camera.eye) @ camera.axes, normal[front] @ camera.axes,
-                lit[front], face_bodies[front])
+            bodies.append(np.full(len(part.quads), part.body))
+        world = np.concatenate(quads)  # faces x 4 x 3
+        normal = np.concatenate(normals)  # faces x 3
+        front = np.einsum("fk,fk->f", world[:, 0] - camera.eye, normal) < 0.0
+        lit = self._shade(normal[front], np.concatenate(colours)[front])
+        return ((world[front] - camera.eye) @ camera.axes, normal[front] @ camera.axes, lit,
+                np.concatenate(bodies)[front])
 
     def _shade(self, normals: np.ndarray, base: np.ndarray) -> np.ndarray:
         """The tiny renderer's colour of each face: int(ambient * c + diffuse * max(0, n.l) * c)."""
-        lambert = np.maximum(0.0, normals @ self._light).astype(np.float32)[:, :, None]
-        colour = self._ambient * base[:, None, :] + self._diffuse * lambert * base[:, None, :]
+        lambert = np.maximum(0.0, normals @ self._light).astype(np.float32)[:, None]
+        colour = self._ambient * base + self._diffuse * lambert * base
         return np.asarray(np.minimum(colour, 255), dtype=np.uint8)
 
     def render(self, camera: Camera, *, segmentation: bool = False

@@ -81,7 +81,7 @@ def test_an_unwritable_output_folder_is_exit_2(machine: Machine, capsys: pytest.
     assert code == 2 and "cannot write in /proc/nowhere" in err
 
 
-def test_the_score_is_the_scenario_task_s_and_none_without_a_task(
+def test_the_score_is_the_scenario_task_s_and_about_robots_only_without_a_task(
     machine: Machine, capsys: pytest.CaptureFixture[str], tmp_path: Path
 ) -> None:
     path = machine("talk", TALK)
@@ -90,7 +90,8 @@ def test_the_score_is_the_scenario_task_s_and_none_without_a_task(
     bare = tmp_path / "bare.yaml"
     bare.write_text("robots:\n  r1: {x: -1.0, y: 0.5}\n  r2: {x: 1.0, y: -0.5}\n")
     code, out, _ = run(capsys, path, "--world", "sim", "--scenario", bare, "--no-video", "--out", tmp_path)
-    assert code == 0 and "r2: ended in 'done'" in out
-    assert "score" not in out and "task" not in out and "table" not in out
+    assert code == 0 and "r2: ended in 'done'" in out and "score: robot_collisions 0, time " in out
+    assert "task" not in out and "table" not in out and "success" not in out and "dropped" not in out
     code, out, _ = run(capsys, path, "--world", "sim", "--scenario", bare, "--json", "--no-video", "--out", tmp_path)
-    assert code == 0 and set(json.loads(out)) == {"agents"}
+    assert code == 0 and set(json.loads(out)) == {"agents", "score"}
+    assert set(json.loads(out)["score"]) == {"robot_collisions", "time"}

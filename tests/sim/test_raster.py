@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
+import cv2
 import numpy as np
 import pybullet as p
 import pytest
@@ -105,3 +106,24 @@ def test_spans_sample_pixels_as_points(corners: list[tuple[float, float]], clock
                 continue  # on an edge: either way is fine
             inside = all(s > 0 for s in signs) or all(s < 0 for s in signs)
             assert (rows[0, j] and first[0, j] <= i <= last[0, j]) == inside
+
+
+def test_a_light_robot_s_cylinder_is_drawn_where_the_tiny_renderer_draws_it(
+        world_factory: Callable[..., World]) -> None:
+    world = world_factory({"r1": {"x": -1.2, "y": 0.0, "yaw": 0.0},
+                           "r2": {"x": 0.0, "y": 1.0, "yaw": 0.0, "body": "light"}},
+                          table={"x": 1.2, "y": -1.2})
+    robot = world.robots["r1"]
+    robot.set_head(math.radians(40), 0.0)
+    world.advance(1.0)
+    tiny, ours, tiny_mask, mask = _both(robot, "forward")
+    light = world.truth.robot_id("r2")
+    assert (tiny_mask == light).mean() > 0.02
+    assert ((mask == light) == (tiny_mask == light)).mean() > 0.995
+    both = (mask == light) & (tiny_mask == light)
+    # flat sides where the tiny renderer shades smoothly (its normals lean up towards the top):
+    # the same hue, a little brighter or darker
+    hue, hue_tiny = (cv2.cvtColor(im[None, both], cv2.COLOR_RGB2HSV)[0].astype(int)
+                     for im in (ours, tiny))
+    assert (np.abs(hue[:, 0] - hue_tiny[:, 0]) <= 2).mean() > 0.98
+    assert np.abs(hue[:, 2] - hue_tiny[:, 2]).mean() < 12
