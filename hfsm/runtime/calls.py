@@ -114,14 +114,13 @@ class Calls(Cancelling):
             if frame.attempt > times:  # type: ignore[operator]
                 return event
             self._ended_once(frame, event)
-            frame.attempt += 1
             if self.trace is not None:
                 self.emit(
                     frame.agent,
                     frame.path(),
                     "event",
                     event="retry",
-                    attempt=frame.attempt,
+                    attempt=frame.attempt + 1,
                     outcome=event.name,
                 )
             delay = self._delay(state.retry_delay, frame)
@@ -130,11 +129,18 @@ class Calls(Cancelling):
             if delay:
                 frame.retry_at = self.tick + delay  # type: ignore[operator]
                 return None
+            self._next_attempt(frame)
             ended = self._start_call(frame, state, frame)
             if ended is None:
                 return None
             event = ended
         return event
+
+    def _next_attempt(self, frame: Frame) -> None:
+        """`state.attempt` grows as the behaviour is called again (SPEC 13), not during the delay."""
+        frame.attempt += 1
+        if frame.state.watches:
+            self.wake = True  # the watches read it next in the following tick: not to be skipped
 
     def _ended_once(self, frame: Frame, event: Event) -> None:
         """An attempt that will be retried: its error written down, or its outputs saved."""
