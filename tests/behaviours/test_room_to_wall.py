@@ -10,7 +10,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from behaviours.carry.wall import room_to_wall
-from sim.perception.carry import WallSeen
+from sim.perception import WallSeen
 
 
 def wall_at(distance: float, normal_deg: float) -> WallSeen:
