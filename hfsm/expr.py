@@ -433,7 +433,9 @@ def compile_expr(source: str, names: Names) -> Fn:
     try:
         tree = ast.parse(text, mode="eval")
     except SyntaxError as exc:
-        raise ExprSyntaxError(f"bad expression '{source}': {exc.msg}") from None
+        bare = source.strip()
+        hint = f"; a condition is a bare expression: write '{bare[2:-1]}'" if bare.startswith("${") else ""
+        raise ExprSyntaxError(f"bad expression '{source}': {exc.msg}{hint}") from None
     return _Compiler(names).compile(tree.body)
 
 
