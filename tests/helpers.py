@@ -10,6 +10,9 @@ from pathlib import Path
 from types import ModuleType
 from typing import Any
 
+import pytest
+
+from hfsm.cli.run import main
 from hfsm.load import load
 from hfsm.registry import Registry
 from hfsm.runtime.failing import Failure
@@ -19,6 +22,13 @@ from hfsm.trace import ListTrace, TraceSink
 from hfsm.world import NullWorld, World
 
 ROOT = Path(__file__).resolve().parent.parent
+
+
+def hfsm_run(capsys: pytest.CaptureFixture[str], *argv: object) -> tuple[int, str, str]:
+    """`hfsm-run ARGV` in process: its exit code, stdout and stderr."""
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
 
 
 def write(folder: Path, name: str, text: str) -> Path:
