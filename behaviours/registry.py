@@ -31,6 +31,6 @@ def machines() -> Traversable:
 
 def primitives() -> tuple[Primitive, ...]:
     """The primitives themselves (imports the simulator): what `primitives.json` is made from."""
-    from behaviours import approach, carry
+    from behaviours import approach, carry, moves, teamwork
 
-    return (*approach.PRIMITIVES, *carry.PRIMITIVES)
+    return (*approach.PRIMITIVES, *carry.PRIMITIVES, *moves.PRIMITIVES, *teamwork.PRIMITIVES)
