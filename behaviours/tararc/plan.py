@@ -58,7 +58,8 @@ def record_of(history: History, robot: str) -> dict[str, Any]:
     out: dict[str, Any] = {"n_s": rec.n_s, "n_f": rec.n_f}
     if robot in history.beliefs:
         out["belief"] = history.beliefs[robot]
-    out["pairs"] = {b if a == robot else a: [r.n_s, r.n_f] for (a, b), r in history.pairs.items() if robot in (a, b)}
+    mine = ((a, b, r) for (a, b), r in history.pairs.items() if robot in (a, b))
+    out["pairs"] = {b if a == robot else a: [r.n_s, r.n_f] for a, b, r in mine}
     return out
 
 
@@ -115,8 +116,8 @@ def after_losses(plan: Plan, lost: Sequence[str], n_thres: int) -> Plan:
             groups[i] = g
     out = []
     for entry, group in zip(plan["groups"], groups, strict=True):
-        members = [] if group is None else list(group.members)
-        out.append({"agent": None if group is None else group.agent, "members": members, "task": entry["task"]})
+        agent, members = (None, []) if group is None else (group.agent, list(group.members))
+        out.append({"agent": agent, "members": members, "task": entry["task"]})
     return {**plan, "groups": out}
 
 

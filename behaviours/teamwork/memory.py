@@ -48,6 +48,7 @@ def tararc_remember(
     outcomes = group_outcomes(last, said)
     if history:
         before = history_of({r: {"record": rec} for r, rec in first["records"].items()})
-        after = record_team(before, first, last, [str(r) for r in lost], outcomes, coefficients_from(coefficients))
+        gone = [str(r) for r in lost]
+        after = record_team(before, first, last, gone, outcomes, coefficients_from(coefficients))
         save(Path(history), merge_into(_read(history), list(first["records"]), after))
     return Outcome("remembered", outcomes=outcomes)

@@ -20,7 +20,12 @@ def coefficients_from(values: dict[str, Any]) -> Coefficients:
 
 @primitive(outcomes=["allocated"], outputs=["plan"])
 def tararc_allocate(
-    ctx: Context, *, mine: dict[str, Any], heard: dict[str, Any], tasks: list[Any], coefficients: dict[str, Any]
+    ctx: Context,
+    *,
+    mine: dict[str, Any],
+    heard: dict[str, Any],
+    tasks: list[Any],
+    coefficients: dict[str, Any],
 ) -> Outcome:
     """Group, elect agents and let them compete for `tasks` from every robot's state (`mine`, this
     robot's; `heard`, the others' by id): every robot computes the same plan from the same states."""
