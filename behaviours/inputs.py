@@ -35,8 +35,17 @@ SIM_INPUTS: Mapping[str, InputSpec] = {
         InputSpec(
             "pose",
             "dict",
-            "odometry in the robot's own start frame: {x: metres, y: metres, yaw: degrees, left positive}",
+            "odometry, {x: metres, y: metres, yaw: degrees, left positive}: in the robot's own start "
+            "frame (full body), or in the room's frame from the start pose the scenario tells it "
+            "(light body)",
         ),
         InputSpec("battery", "float", "the battery's charge, 0 (empty: the robot fails) to 1 (full)"),
+        InputSpec(
+            "tasks",
+            "list",
+            "the tasks the team is given, in scenario order, tables then targets: [{id, kind: "
+            "table|target, x, y: metres in the room's frame (a table's start centre), difficulty: "
+            "0..1, priority: 1 first}]",
+        ),
     )
 }

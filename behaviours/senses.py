@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 
 from sim import Robot
+from sim.light import LightRobot
 from sim.perception import Blob, blob_ground, find_robots, find_table, pixel_bearing
 
 
@@ -20,26 +21,38 @@ def _degrees(radians: float) -> float:
     return round(math.degrees(radians), 6)
 
 
+LIGHT_BLIND = ("table_in_view", "table_bearing", "table_distance", "partner_in_view", "hand_give_left",
+               "hand_give_right")
+
+
 class Senses:
     """One robot's inputs at one tick (a new tick starts afresh)."""
 
-    def __init__(self, robot: Robot, own_colour: int) -> None:
-        self.robot = robot
+    def __init__(self, robot: Robot | LightRobot, own_colour: int,
+                 tasks: list[dict[str, Any]] | None = None) -> None:
         self.own_colour = own_colour  # the index of its own body colour: it never sees itself
+        self.tasks = tasks or []
         self._tick = -1
         self._image: np.ndarray | None = None
         self._table: Blob | None = None
         self.readers: dict[str, Callable[[], Any]] = {
+            "pose": lambda: self.pose(robot),
+            "battery": robot.battery,
+            "tasks": lambda: self.tasks,
+        }
+        if isinstance(robot, LightRobot):  # no cameras, no hands: what they would sense is null
+            self.readers.update(dict.fromkeys(LIGHT_BLIND, lambda: None), holding=lambda: False)
+            return
+        self.robot = robot
+        self.readers.update({
             "table_in_view": lambda: self.table().found,
             "table_bearing": self.table_bearing,
             "table_distance": self.table_distance,
             "partner_in_view": self.partner_in_view,
-            "hand_give_left": lambda: float(np.linalg.norm(self.robot.hand_load().left)),
-            "hand_give_right": lambda: float(np.linalg.norm(self.robot.hand_load().right)),
-            "holding": self.robot.holding,
-            "pose": self.pose,
-            "battery": self.robot.battery,
-        }
+            "hand_give_left": lambda: float(np.linalg.norm(robot.hand_load().left)),
+            "hand_give_right": lambda: float(np.linalg.norm(robot.hand_load().right)),
+            "holding": robot.holding,
+        })
 
     def read(self, name: str, tick: int) -> Any:
         if tick != self._tick:
@@ -71,6 +84,7 @@ class Senses:
         blobs = find_robots(self.image())
         return any(b.found for i, b in enumerate(blobs) if i != self.own_colour)
 
-    def pose(self) -> dict[str, float]:
-        x, y, yaw = self.robot.odometry()
+    @staticmethod
+    def pose(robot: Robot | LightRobot) -> dict[str, float]:
+        x, y, yaw = robot.odometry()
         return {"x": round(x, 6), "y": round(y, 6), "yaw": _degrees(yaw)}

@@ -19,8 +19,9 @@ from hfsm.primitive import Message
 from hfsm.runtime.program import span_ticks
 from hfsm.world import InputSpec
 from hfsm.yamlio import read_mapping
-from sim import Robot, Scenario, World, resolve
+from sim import Scenario, World, resolve
 from sim.recorder import Recorder
+from sim.team import AnyRobot
 
 SCORE_KEYS = ("success", "table_wall_distance", "dropped", "robot_collisions", "time")
 
@@ -81,6 +82,7 @@ class SimWorld:
         self._outputs = list(outputs)
         self._next_progress = progress_every
         self._senses: dict[str, Senses] = {}
+        self._failures = world.scenario.failure_times(world.seed)
 
     @property
     def outputs(self) -> list[Path]:
@@ -95,7 +97,7 @@ class SimWorld:
         if self._recorder is not None:
             self.world.record(self._recorder)
 
-    def handle(self, agent: str) -> Robot:
+    def handle(self, agent: str) -> AnyRobot:
         return self.world.robots[agent]
 
     def inputs(self) -> Mapping[str, InputSpec]:
@@ -105,7 +107,7 @@ class SimWorld:
         senses = self._senses.get(agent)
         if senses is None:
             own = list(self.world.robots).index(agent)  # robots wear the colours in scenario order
-            senses = self._senses[agent] = Senses(self.world.robots[agent], own)
+            senses = self._senses[agent] = Senses(self.world.robots[agent], own, self.world.scenario.tasks())
         return senses.read(name, tick)
 
     def post(self, message: Message) -> None:
@@ -137,10 +139,11 @@ class SimWorld:
         return Labels(self.world.labels)
 
     def failures(self, tick: int) -> Sequence[tuple[str, str]]:
-        """The scenario's failures due now, and robots whose battery is empty."""
-        due = [(f.robot, f.reason) for f in self.world.scenario.failures if span_ticks(f.at, self.dt) == tick]
+        """The scenario's failures due now (`at:` times and the seeded `rate:` ones), and robots
+        whose battery is empty."""
+        due = [(name, reason) for at, name, reason in self._failures if span_ticks(at, self.dt) == tick]
         for name, robot in self.world.robots.items():
-            if robot.battery() <= 0.0 and not robot.failed:
+            if robot.battery_empty() and not robot.failed:
                 due.append((name, "battery empty"))
         return due
 

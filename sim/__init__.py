@@ -1,4 +1,5 @@
-"""sim: a headless pybullet world for two (or more) NAO-sized robots and a blue table.
+"""sim: a headless pybullet world for NAO-sized robots (2 to 16) or light cylinders (up to 50),
+blue tables and target points (scenario format: sim/README.md, "Teams").
 
 Nothing here imports hfsm or behaviours; pybullet is imported only inside this package.
 Each `World` owns its own `p.DIRECT` client (no module-level state); close it when done.
@@ -12,7 +13,8 @@ Public API (what the behaviours layer uses)::
                   recorder=None)               # or sim.recorder.Recorder(...)
     world.advance(0.05)                        # step physics for 0.05 s (6 steps at 120 Hz)
     world.time                                 # simulated seconds
-    world.robots: dict[str, Robot]             # scenario order
+    world.robots: dict[str, Robot | LightRobot]  # scenario order; LightRobot (body: light) has
+                                               #   only the motion, odometry, battery, bumps
     world.radio: Radio                         # send(sender, to, payload, t) / deliver(t)
     world.score() -> dict                      # success, table_wall_distance, dropped,
                                                # robot_collisions, time, and a few extras
@@ -34,6 +36,7 @@ Public API (what the behaviours layer uses)::
                                                #   each hand's give (m) off the arm's posture
     robot.bumped() -> bool                     # body touched something in the last advance
     robot.battery() -> float                   # charge 0..1 (scenario `battery:` coefficients)
+    robot.battery_empty() -> bool              # the robot fails when it is
     world.fail(name)                           # the robot stops, drops what it holds, goes
                                                #   silent (scenario `failures:`, or the engine)
 
@@ -49,6 +52,7 @@ sim/README.md (numbers in sim/profile.py).
 """
 
 from sim.camera import CameraModel
+from sim.light import LightRobot
 from sim.radio import Radio
 from sim.robot import ArmState, HandLoad, Robot
 from sim.scenario import (
@@ -66,6 +70,7 @@ __all__ = [
     "ArmState",
     "CameraModel",
     "HandLoad",
+    "LightRobot",
     "Radio",
     "Robot",
     "Scenario",

@@ -1,4 +1,5 @@
-"""Dead reckoning in the robot's own start frame, with seeded scale errors and yaw drift."""
+"""Dead reckoning in the robot's own start frame (or from a start pose it was told), with seeded
+scale errors and yaw drift."""
 
 from __future__ import annotations
 
@@ -15,12 +16,13 @@ class Odometry:
     """Integrates the body's true motion, per update, with per-robot biases and noise:
     forward scale ~2 %, sideways ~4 %, turn ~2 % (1 sigma), yaw drift ~0.02 rad per metre."""
 
-    def __init__(self, rng: np.random.Generator, start: tuple[float, float, float]) -> None:
+    def __init__(self, rng: np.random.Generator, start: tuple[float, float, float],
+                 told: tuple[float, float, float] | None = None) -> None:
         self._rng = rng
         self._scale = 1.0 + rng.normal(0.0, [0.02, 0.04, 0.02])
         self._drift = float(rng.normal(0.0, 0.02))
         self._last = start
-        self._pose = (0.0, 0.0, 0.0)
+        self._pose = told or (0.0, 0.0, 0.0)
 
     def pose(self) -> tuple[float, float, float]:
         return self._pose

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import heapq
 import itertools
+from collections import Counter
 from typing import Any
 
 import numpy as np
@@ -29,6 +30,7 @@ class Radio:
         self.sent = 0
         self.lost = 0
         self._silent: set[str] = set()
+        self._read: Counter[str] = Counter()
 
     def silence(self, name: str) -> None:
         """A robot that failed: from now on it sends nothing and hears nothing."""
@@ -54,7 +56,13 @@ class Radio:
             message = heapq.heappop(self._queue)[2]
             if message[1] not in self._silent:
                 out.append(message)
+                self._read[message[1]] += 1
         return out
+
+    def take_reads(self) -> Counter[str]:
+        """How many messages each receiver got since the last call (what eq. 5's battery spends)."""
+        reads, self._read = self._read, Counter()
+        return reads
 
     def pending(self) -> int:
         return len(self._queue)

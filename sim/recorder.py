@@ -12,7 +12,9 @@ import av
 import cv2
 import numpy as np
 
+from sim.light import LIGHT_BODY
 from sim.profile import ROBOT_COLOURS, TABLE_COLOUR
+from sim.robot import Robot
 from sim.video import VideoWriter
 from sim.view3d import label, perspective, robot_text, status
 
@@ -59,20 +61,24 @@ class Recorder:
 
         cv2.rectangle(image, px(-room.width / 2, room.depth / 2),
                       px(room.width / 2, -room.depth / 2), FLOOR_BGR, -1)
-        corners = np.array([px(c[0], c[1]) for c in truth.table_corners()], np.int32)
-        lift = truth.table_pose()[2]
-        cv2.fillPoly(image, [corners], _bgr(TABLE_COLOUR, 1.0 if lift < 0.02 else 1.1))
-        cv2.polylines(image, [corners], True, (0, 0, 255) if world.dropped else (255, 255, 255),
-                      2 if world.dropped else 1)
+        for i in range(len(truth.tables)):
+            corners = np.array([px(c[0], c[1]) for c in truth.table_corners(index=i)], np.int32)
+            lift = truth.table_pose(i)[2]
+            cv2.fillPoly(image, [corners], _bgr(TABLE_COLOUR, 1.0 if lift < 0.02 else 1.1))
+            cv2.polylines(image, [corners], True, (0, 0, 255) if world.dropped else (255, 255, 255),
+                          2 if world.dropped else 1)
+        for target in world.scenario.targets:
+            cv2.drawMarker(image, px(target.x, target.y), (0, 0, 200), cv2.MARKER_CROSS, 12, 2)
         for index, name in enumerate(world.robots):
             self._draw_robot(image, world, name, ROBOT_COLOURS[index % len(ROBOT_COLOURS)], px)
         for name in world.robots:
             x, y, _ = truth.robot_pose(name)
             label(image, robot_text(name, world.labels), px(x, y + 0.3))
         status(image, world)
-        cv2.putText(image, f"wall gap {truth.table_wall_distance():.2f} m",
-                    (margin + 4, self.size - margin - 6), cv2.FONT_HERSHEY_SIMPLEX, 0.45,
-                    (255, 255, 255), 1, cv2.LINE_AA)
+        if truth.tables:
+            gap = max(truth.table_wall_distance(i) for i in range(len(truth.tables)))
+            cv2.putText(image, f"wall gap {gap:.2f} m", (margin + 4, self.size - margin - 6),
+                        cv2.FONT_HERSHEY_SIMPLEX, 0.45, (255, 255, 255), 1, cv2.LINE_AA)
         return image
 
     @staticmethod
@@ -80,8 +86,14 @@ class Recorder:
                     colour: tuple[float, float, float], px: object) -> None:
         assert callable(px)
         x, y, yaw = world.truth.robot_pose(name)
-        g = world.truth.robot_bodies[name].geometry
         c, s = math.cos(yaw), math.sin(yaw)
+        if name not in world.truth.robot_bodies:  # a light body: a disc
+            centre, edge = px(x, y), px(x + LIGHT_BODY.radius, y)
+            cv2.circle(image, centre, max(1, edge[0] - centre[0]), _bgr(colour), -1)
+            nose = px(x + c * LIGHT_BODY.radius, y + s * LIGHT_BODY.radius)
+            cv2.line(image, centre, nose, _bgr(colour, 0.6), 2)
+            return
+        g = world.truth.robot_bodies[name].geometry
         box = [(x + c * dx - s * dy, y + s * dx + c * dy)
                for dx, dy in ((g.half_depth, g.half_width), (-g.half_depth, g.half_width),
                               (-g.half_depth, -g.half_width), (g.half_depth, -g.half_width))]
@@ -90,8 +102,8 @@ class Recorder:
 
     def _camera_column(self, world: World) -> np.ndarray:
         """Each robot's forward and down views stacked, scaled to the frame's height."""
-        tiles = [np.hstack([world.robots[n].image("forward"), world.robots[n].image("down")])
-                 for n in world.robots]
+        tiles = [np.hstack([robot.image("forward"), robot.image("down")])
+                 for robot in world.robots.values() if isinstance(robot, Robot)]
         column = cv2.cvtColor(np.vstack(tiles), cv2.COLOR_RGB2BGR)
         width = int(column.shape[1] * self.size / column.shape[0])
         return cv2.resize(column, (width, self.size), interpolation=cv2.INTER_NEAREST)

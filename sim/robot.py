@@ -1,4 +1,4 @@
-"""Robot: what one robot can command and sense, and nothing about the world's poses."""
+"""Robot: what one humanoid can command and sense, and nothing about the world's poses."""
 
 from __future__ import annotations
 
@@ -9,20 +9,13 @@ from dataclasses import dataclass
 import numpy as np
 import pybullet as p
 
+from sim.base import Base, Chassis, clamp
 from sim.battery import Battery
-from sim.body import ARMS, HEAD, NECK, RobotBody, drive_joint, yaw_of
+from sim.body import ARMS, HEAD, NECK, RobotBody, drive_joint
 from sim.camera import CameraModel, camera_model, camera_spec, render
-from sim.odometry import Odometry, wrap
 from sim.profile import MotionProfile
 
-LEASH_XY, LEASH_YAW = 0.02, 0.1
-UNWIND_XY, UNWIND_YAW = 0.01, 0.05
 SETTLED_ANGLE, SETTLED_HEIGHT = 0.01, 0.002
-
-
-def _clamp(value: float, low: float, high: float) -> float:
-    return max(low, min(high, value))
-
 
 Vector = tuple[float, float, float]
 
@@ -69,65 +62,27 @@ class HandLoad:
         )
 
 
-class Robot:
-    """Commands are held until changed; all readings are what the robot itself could sense.
+class Robot(Base):
+    """The humanoid: a base (see `Base`), a head with two cameras, and arms that lift.
 
     Created by `World`; behaviours never build one."""
+
+    body_kind = "full"
 
     def __init__(self, cid: int, name: str, body: RobotBody, motion: MotionProfile,
                  rng: np.random.Generator, image_size: tuple[int, int],
                  holding: Callable[[], bool],
                  load: Callable[[], tuple[np.ndarray, np.ndarray]],
                  battery: Battery | None = None) -> None:
-        self.name = name
-        self.profile = motion
-        self._cid, self._body, self._g = cid, body, body.geometry
+        g = body.geometry
+        super().__init__(cid, name, Chassis(body.body, body.mocap, g.hover, g.base_max_force), motion,
+                         rng, battery)
+        self._body, self._g = body, g
         self._image_size = image_size
         self._holding = holding
         self._load = load
-        self._cmd = (0.0, 0.0, 0.0)
-        pose = self._true_pose()
-        self._target = pose
-        self._odometry = Odometry(rng, pose)
         self._head_target = (0.0, 0.0)
         self._arm_target = motion.arm_low
-        self._bumped = False
-        self._battery = battery
-        self._last_xy = pose[:2]
-        self.failed = False
-
-    # motion
-    def set_velocity(self, forward: float, sideways: float, turn: float) -> None:
-        """Walk velocity in the body frame (m/s forward, m/s to the left, rad/s counter-
-        clockwise), clamped to the profile and held until changed."""
-        if self.failed:
-            return
-        m = self.profile
-        cmd = (_clamp(forward, -m.backward_max, m.forward_max),
-               _clamp(sideways, -m.sideways_max, m.sideways_max),
-               _clamp(turn, -m.turn_max, m.turn_max))
-        if cmd != self._cmd:
-            self._cmd = cmd
-            self._unwind()
-
-    def stop(self) -> None:
-        self.set_velocity(0.0, 0.0, 0.0)
-
-    def velocity(self) -> tuple[float, float, float]:
-        """The commanded (clamped) velocity."""
-        return self._cmd
-
-    def odometry(self) -> tuple[float, float, float]:
-        """(x, y, yaw) in the robot's own start frame, with seeded drift."""
-        return self._odometry.pose()
-
-    def battery(self) -> float:
-        """The battery's charge, 0 (empty) to 1 (full); 1 when the scenario models no battery."""
-        return 1.0 if self._battery is None else self._battery.level
-
-    def bumped(self) -> bool:
-        """True if the body touched something during the last `World.advance`."""
-        return self._bumped
 
     # head
     def set_head(self, yaw: float, pitch: float) -> None:
@@ -135,8 +90,8 @@ class Robot:
         if self.failed:
             return
         m = self.profile
-        self._head_target = (_clamp(yaw, -m.head_yaw_max, m.head_yaw_max),
-                             _clamp(pitch, m.head_pitch_min, m.head_pitch_max))
+        self._head_target = (clamp(yaw, -m.head_yaw_max, m.head_yaw_max),
+                             clamp(pitch, m.head_pitch_min, m.head_pitch_max))
         drive_joint(self._cid, self._body.body, NECK, self._head_target[0], m.head_speed)
         drive_joint(self._cid, self._body.body, HEAD, self._head_target[1], m.head_speed)
 
@@ -175,7 +130,7 @@ class Robot:
         if self.failed:
             return
         m = self.profile
-        self._arm_target = _clamp(height, m.arm_low, m.arm_high)
+        self._arm_target = clamp(height, m.arm_low, m.arm_high)
         drive_joint(self._cid, self._body.body, ARMS, self._arm_target - self._g.hover,
                     m.arm_speed)
 
@@ -195,58 +150,9 @@ class Robot:
         yaw = self._true_pose()[2]
         return HandLoad(_to_body(force, yaw), _to_body(give[0], yaw), _to_body(give[1], yaw))
 
-    # called by World
-    def _true_pose(self) -> tuple[float, float, float]:
-        pos, orn = p.getBasePositionAndOrientation(self._body.body, physicsClientId=self._cid)
-        return (pos[0], pos[1], yaw_of(orn))
-
+    # called by World and Lifting
     def _arms_active(self) -> bool:
         return self._arm_target > self.profile.arm_low + 1e-6
 
     def _arms_lowering(self) -> bool:
         return self._arm_target < self.arms_state().height - SETTLED_HEIGHT
-
-    def _unwind(self) -> None:
-        """Drop the lead a blocked walk built up, so a new command starts from where we are."""
-        ax, ay, ayaw = self._true_pose()
-        x, y, yaw = self._target
-        if math.hypot(x - ax, y - ay) > UNWIND_XY or abs(wrap(yaw - ayaw)) > UNWIND_YAW:
-            self._target = (ax, ay, ayaw)
-            self._push_target()
-
-    def _push_target(self) -> None:
-        x, y, yaw = self._target
-        orn = (0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2))
-        p.changeConstraint(self._body.mocap, jointChildPivot=[x, y, self._g.hover],
-                           jointChildFrameOrientation=orn, maxForce=self._g.base_max_force,
-                           physicsClientId=self._cid)
-
-    def _pre_step(self, dt: float) -> None:
-        forward, sideways, turn = self._cmd
-        if forward == 0.0 and sideways == 0.0 and turn == 0.0:
-            return
-        x, y, yaw = self._target
-        c, s = math.cos(yaw), math.sin(yaw)
-        x, y, yaw = x + (c * forward - s * sideways) * dt, y + (s * forward + c * sideways) * dt, \
-            yaw + turn * dt
-        ax, ay, ayaw = self._true_pose()
-        dx, dy = x - ax, y - ay
-        dist = math.hypot(dx, dy)
-        if dist > LEASH_XY:
-            x, y = ax + dx * LEASH_XY / dist, ay + dy * LEASH_XY / dist
-        yaw = ayaw + _clamp(wrap(yaw - ayaw), -LEASH_YAW, LEASH_YAW)
-        self._target = (x, y, yaw)
-        self._push_target()
-
-    def _after_advance(self, bumped: bool, seconds: float = 0.0) -> None:
-        pose = self._true_pose()
-        self._odometry.update(pose)
-        self._bumped = bumped
-        if self._battery is not None:
-            self._battery.drain(seconds, math.dist(pose[:2], self._last_xy))
-        self._last_xy = pose[:2]
-
-    def _fail(self) -> None:
-        """It stops where it stands and takes no more commands (the world lets go of its load)."""
-        self.stop()
-        self.failed = True

@@ -1,4 +1,5 @@
-"""Scenario files: room, table and robot starts, as a strict pydantic v2 model.
+"""Scenario files: room, tables and targets, robot starts, batteries and failures, as a strict
+pydantic v2 model (the parts are in sim/specs.py).
 
 The engine reads YAML itself (with line:col errors) and passes the parsed mapping to
 `scenario_from_dict`; `load_scenario` is a plain `yaml.safe_load` convenience.
@@ -10,110 +11,136 @@ import math
 from collections.abc import Mapping
 from importlib import resources
 from pathlib import Path
-from typing import Annotated, Any
+from typing import Any
 
 import numpy as np
 import yaml
-from pydantic import (
-    BaseModel,
-    ConfigDict,
-    Field,
-    StringConstraints,
-    ValidationInfo,
-    field_validator,
-    model_validator,
-)
+from pydantic import Field, ValidationInfo, field_validator, model_validator
 from pydantic_core import PydanticCustomError
 
+from sim.specs import (
+    BatterySpec,
+    Eq5Battery,
+    FailureAt,
+    FailureRate,
+    FailureSpec,
+    Jitter,
+    LinearBattery,
+    RobotName,
+    RobotStart,
+    Room,
+    Strict,
+    TableSpec,
+    Target,
+)
+
+__all__ = [
+    "DEFAULT_SCENARIO",
+    "BatterySpec",
+    "Eq5Battery",
+    "FailureAt",
+    "FailureRate",
+    "FailureSpec",
+    "Jitter",
+    "LinearBattery",
+    "RobotStart",
+    "Room",
+    "Scenario",
+    "TableSpec",
+    "Target",
+    "load_scenario",
+    "resolve",
+    "scenario_from_dict",
+    "scenario_names",
+]
+
 DEFAULT_SCENARIO = "opposite_long_side"
-RobotName = Annotated[str, StringConstraints(pattern=r"^[a-z][a-z0-9_]*$")]
+MAX_ROBOTS, MAX_FULL_ROBOTS = 50, 16
+WALL_CLEARANCE = 0.2
 
 
-class _Strict(BaseModel):
-    model_config = ConfigDict(extra="forbid", strict=True, frozen=True, allow_inf_nan=False)
-
-
-class Room(_Strict):
-    width: float = Field(5.0, gt=1.5, le=50.0, description="extent along x, metres")
-    depth: float = Field(5.0, gt=1.5, le=50.0, description="extent along y, metres")
-    wall_height: float = Field(2.0, gt=0.3, le=5.0)
-
-
-class TableSpec(_Strict):
-    x: float = 0.0
-    y: float = 0.0
-    yaw: float = Field(0.0, description="degrees, long side along x at 0")
-    length: float = Field(0.8, gt=0.2, le=3.0)
-    width: float = Field(0.5, gt=0.2, le=2.0)
-    height: float = Field(0.33, ge=0.25, le=0.40, description="floor to top surface")
-    mass: float = Field(2.0, gt=0.1, le=20.0)
-
-    @model_validator(mode="after")
-    def _long_side_is_length(self) -> TableSpec:
-        if self.width > self.length:
-            raise ValueError("table width must not exceed its length (length is the long side)")
-        return self
-
-
-class RobotStart(_Strict):
-    x: float
-    y: float
-    yaw: float = Field(0.0, description="degrees, 0 faces +x")
-
-
-class Jitter(_Strict):
-    position: float = Field(0.0, ge=0.0, le=1.0, description="max offset per axis, metres")
-    yaw: float = Field(0.0, ge=0.0, le=180.0, description="max offset, degrees")
-
-
-class Battery(_Strict):
-    """A robot's charge, 0..1: it falls with time and with the distance walked; empty, it fails."""
-
-    start: float = Field(1.0, gt=0.0, le=1.0, description="charge at t = 0")
-    idle: float = Field(0.0002, ge=0.0, le=1.0, description="charge spent per second")
-    walk: float = Field(0.002, ge=0.0, le=1.0, description="charge spent per metre walked")
-
-
-class FailureSpec(_Strict):
-    """A robot that fails (stops, drops what it holds, goes silent) at a time of the run."""
-
-    robot: RobotName
-    at: float = Field(ge=0.0, allow_inf_nan=False, description="seconds into the run")
-    reason: str = "failed"
-
-
-class Scenario(_Strict):
+class Scenario(Strict):
     description: str = ""
     room: Room = Room()
-    table: TableSpec = TableSpec()
-    robots: dict[RobotName, RobotStart] = Field(min_length=1, max_length=5)
+    table: TableSpec | None = Field(None, description="one table (shorthand for a one-item `tables:`)")
+    tables: list[TableSpec] | None = None
+    targets: list[Target] = Field(default_factory=list)
+    robots: dict[RobotName, RobotStart] = Field(min_length=1, max_length=MAX_ROBOTS)
     jitter: Jitter = Jitter()
-    battery: Battery = Battery()
-    failures: list[FailureSpec] = []
+    battery: BatterySpec = LinearBattery()
+    failures: list[FailureSpec] = Field(default_factory=list)
+
+    @field_validator("robots")
+    @classmethod
+    def _few_full_bodies(cls, robots: dict[str, RobotStart]) -> dict[str, RobotStart]:
+        full = sum(start.body == "full" for start in robots.values())
+        if full > MAX_FULL_ROBOTS:
+            message = f"{full} robots with the full body; at most {MAX_FULL_ROBOTS} (use body: light)"
+            raise PydanticCustomError("too_many_full", message)
+        return robots
 
     @field_validator("failures")
     @classmethod
-    def _known_robots(cls, failures: list[FailureSpec], info: ValidationInfo) -> list[FailureSpec]:
+    def _known_robots(cls, failures: list[FailureAt | FailureRate], info: ValidationInfo
+                      ) -> list[FailureAt | FailureRate]:
         robots = info.data.get("robots") or {}
         for i, failure in enumerate(failures):
-            if failure.robot not in robots:
-                names = ", ".join(robots)
-                raise PydanticCustomError("unknown_robot", f"[{i}] names no robot of the scenario ({names})")
+            named = [failure.robot] if isinstance(failure, FailureAt) else failure.robots or []
+            for name in named:
+                if name not in robots:
+                    message = f"[{i}] names no robot of the scenario ({', '.join(robots)})"
+                    raise PydanticCustomError("unknown_robot", message)
         return failures
 
     @model_validator(mode="after")
-    def _inside_room(self) -> Scenario:
+    def _consistent(self) -> Scenario:
+        if self.table is not None and self.tables is not None:
+            raise ValueError("give either `table:` (one table) or `tables:` (a list), not both")
+        ids = self.task_ids()
+        repeated = sorted({i for i in ids if ids.count(i) > 1})
+        if repeated:
+            raise ValueError(f"task ids must be unique across tables and targets: {', '.join(repeated)}")
         half_w, half_d = self.room.width / 2, self.room.depth / 2
-        t = self.table
-        c, s = abs(math.cos(math.radians(t.yaw))), abs(math.sin(math.radians(t.yaw)))
-        reach_x, reach_y = (c * t.length + s * t.width) / 2, (s * t.length + c * t.width) / 2
-        if abs(t.x) + reach_x > half_w + 1e-9 or abs(t.y) + reach_y > half_d + 1e-9:
-            raise ValueError("table does not fit inside the room")
+        for i, t in enumerate(self.all_tables):
+            c, s = abs(math.cos(math.radians(t.yaw))), abs(math.sin(math.radians(t.yaw)))
+            reach_x, reach_y = (c * t.length + s * t.width) / 2, (s * t.length + c * t.width) / 2
+            if abs(t.x) + reach_x > half_w + 1e-9 or abs(t.y) + reach_y > half_d + 1e-9:
+                raise ValueError("table does not fit inside the room" if self.tables is None
+                                 else f"table {ids[i]!r} does not fit inside the room")
+        for target in self.targets:
+            if abs(target.x) > half_w or abs(target.y) > half_d:
+                raise ValueError(f"target {target.id!r} is outside the room")
         slack = self.jitter.position  # the seeded jitter may move a start this far either way
+        inner_w, inner_d = half_w - WALL_CLEARANCE, half_d - WALL_CLEARANCE
         for name, start in self.robots.items():
-            if abs(start.x) + slack > half_w - 0.2 or abs(start.y) + slack > half_d - 0.2:
+            if abs(start.x) + slack > inner_w or abs(start.y) + slack > inner_d:
                 raise ValueError(f"robot {name!r} could start outside the room or inside a wall")
         return self
+
+    @property
+    def all_tables(self) -> list[TableSpec]:
+        """The tables of the room: `tables:`, or the one `table:`, or the default table when neither
+        is given (the scenarios of the paper); `tables: []` is a room without tables."""
+        if self.tables is not None:
+            return list(self.tables)
+        return [self.table or TableSpec()]
+
+    def table_ids(self) -> list[str]:
+        return [t.id or f"table{i + 1}" for i, t in enumerate(self.all_tables)]
+
+    def task_ids(self) -> list[str]:
+        return [*self.table_ids(), *(t.id for t in self.targets)]
+
+    def tasks(self) -> list[dict[str, Any]]:
+        """The tasks the team is given (tables at their start, then targets), as plain data."""
+        tables: list[tuple[str, str, TableSpec | Target]] = [
+            (i, "table", t) for i, t in zip(self.table_ids(), self.all_tables, strict=True)]
+        targets: list[tuple[str, str, TableSpec | Target]] = [(t.id, "target", t) for t in self.targets]
+        return [{"id": i, "kind": kind, "x": t.x, "y": t.y, "difficulty": t.difficulty,
+                 "priority": t.priority} for i, kind, t in [*tables, *targets]]
+
+    def battery_of(self, name: str) -> LinearBattery | Eq5Battery:
+        return self.robots[name].battery or self.battery
 
     def starts(self, seed: int) -> dict[str, tuple[float, float, float]]:
         """Robot start poses (x, y, yaw radians) with the seeded jitter applied, in order."""
@@ -124,6 +151,25 @@ class Scenario(_Strict):
             dyaw = rng.uniform(-1.0, 1.0) * self.jitter.yaw
             poses[name] = (start.x + dx, start.y + dy, math.radians(start.yaw + dyaw))
         return poses
+
+    def failure_times(self, seed: int) -> list[tuple[float, str, str]]:
+        """(seconds, robot, reason) of every failure the scenario schedules for this seed, in file
+        order: the `at:` ones as written, and for each `rate:` entry an exponential time to failure
+        per robot at risk (in scenario order), drawn from the seed. A robot fails once: only its
+        earliest failure is kept."""
+        due: list[tuple[float, str, str]] = []
+        for i, failure in enumerate(self.failures):
+            if isinstance(failure, FailureAt):
+                due.append((failure.at, failure.robot, failure.reason))
+                continue
+            rng = np.random.default_rng([seed, 0xFA11, i])
+            for name in failure.robots or list(self.robots):
+                due.append((float(rng.exponential(60.0 / failure.rate)), name, failure.reason))
+        earliest: dict[str, tuple[float, str, str]] = {}
+        for item in due:
+            if item[1] not in earliest or item[0] < earliest[item[1]][0]:
+                earliest[item[1]] = item
+        return [item for item in due if earliest[item[1]] is item]
 
 
 def scenario_from_dict(data: Mapping[str, Any]) -> Scenario:

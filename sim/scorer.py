@@ -21,7 +21,8 @@ class Scorer:
         self._cid = cid
         self._truth = truth
         self.success_distance = success_distance
-        self._names = list(truth.robot_bodies)
+        self._names = list(truth.robot_ids)
+        self._tables = {t.body for t in truth.tables}
         self._ids = {truth.robot_id(n): n for n in self._names}
         self._touching: set[tuple[str, str, str]] = set()
         self.episodes: dict[str, int] = {"robot": 0, "table": 0, "wall": 0}
@@ -32,7 +33,7 @@ class Scorer:
     def _kind(self, other: int) -> str | None:
         if other in self._ids:
             return "robot"
-        if other == self._truth.table_id:
+        if other in self._tables:
             return "table"
         if other in self._truth.room_bodies.walls:
             return "wall"
@@ -63,21 +64,27 @@ class Scorer:
 
     def check_poses(self) -> None:
         """Call once per control tick: records a tipped table and fallen robots."""
-        if self._truth.table_tilt() > TIPPED:
+        if any(self._truth.table_tilt(i) > TIPPED for i in range(len(self._truth.tables))):
             self.dropped = True
         for name in self._names:
             if self._truth.robot_tilt(name) > FALLEN:
                 self.fallen.add(name)
 
     def score(self, time: float, *, dropped: bool = False) -> dict[str, Any]:
-        """The outcome so far; `dropped` adds what the lifting rules saw to the scorer's own view."""
-        distance = self._truth.table_wall_distance()
+        """The outcome so far; `dropped` adds what the lifting rules saw to the scorer's own view.
+
+        Success: every table within `success_distance` of a wall, none dropped, no robot-robot
+        collision. `table_wall_distance` is the farthest table's gap (None in a room without
+        tables); `table_wall_distances` lists each table's, in scenario order, when there are
+        several or none."""
+        distances = [round(self._truth.table_wall_distance(i), 4) for i in range(len(self._truth.tables))]
+        distance = max(distances) if distances else None
         robot_hits = self.episodes["robot"]
         dropped = dropped or self.dropped
-        success = distance <= self.success_distance and not dropped and robot_hits == 0
-        return {
+        success = all(d <= self.success_distance for d in distances) and not dropped and robot_hits == 0
+        score: dict[str, Any] = {
             "success": bool(success),
-            "table_wall_distance": round(distance, 4),
+            "table_wall_distance": distance,
             "dropped": dropped,
             "robot_collisions": robot_hits,
             "robot_table_collisions": self.episodes["table"],
@@ -85,3 +92,6 @@ class Scorer:
             "robots_fallen": sorted(self.fallen),
             "time": round(time, 4),
         }
+        if len(distances) != 1:
+            score["table_wall_distances"] = distances
+        return score

@@ -14,20 +14,30 @@ from sim.scenario import Room
 
 
 class Truth:
-    def __init__(self, cid: int, room: Room, bodies: RoomBodies, table: TableBody,
-                 robots: dict[str, RobotBody]) -> None:
+    """Robots by name (`robot_bodies`: the humanoids' bodies; `robot_ids`: every robot's pybullet
+    body), tables by index in scenario order (the first by default)."""
+
+    def __init__(self, cid: int, room: Room, bodies: RoomBodies, tables: list[TableBody],
+                 robots: dict[str, RobotBody], robot_ids: dict[str, int]) -> None:
         self._cid = cid
         self.room = room
         self.room_bodies = bodies
-        self.table = table
+        self.tables = tables
         self.robot_bodies = robots
+        self.robot_ids = robot_ids
+
+    @property
+    def table(self) -> TableBody:
+        if not self.tables:
+            raise LookupError("this room has no table")
+        return self.tables[0]
 
     @property
     def table_id(self) -> int:
         return self.table.body
 
     def robot_id(self, name: str) -> int:
-        return self.robot_bodies[name].body
+        return self.robot_ids[name]
 
     def robot_pose(self, name: str) -> tuple[float, float, float]:
         """World (x, y, yaw) of a robot's base."""
@@ -53,35 +63,37 @@ class Truth:
         assert mask is not None
         return rgb, mask
 
-    def table_pose(self) -> tuple[float, float, float, float]:
+    def table_pose(self, index: int = 0) -> tuple[float, float, float, float]:
         """(x, y, lift, yaw): the table's centre, its lift above resting height, its yaw."""
-        pos, orn = p.getBasePositionAndOrientation(self.table_id, physicsClientId=self._cid)
-        return (pos[0], pos[1], pos[2] - self.table.com_height, yaw_of(orn))
+        table = self.tables[index]
+        pos, orn = p.getBasePositionAndOrientation(table.body, physicsClientId=self._cid)
+        return (pos[0], pos[1], pos[2] - table.com_height, yaw_of(orn))
 
-    def table_tilt(self) -> float:
+    def table_tilt(self, index: int = 0) -> float:
         """Angle (rad) between the table top's normal and the vertical."""
-        _, orn = p.getBasePositionAndOrientation(self.table_id, physicsClientId=self._cid)
+        _, orn = p.getBasePositionAndOrientation(self.tables[index].body, physicsClientId=self._cid)
         return _tilt(orn)
 
-    def table_matrix(self) -> tuple[np.ndarray, np.ndarray]:
+    def table_matrix(self, index: int = 0) -> tuple[np.ndarray, np.ndarray]:
         """World position of the table's centre of mass and its rotation matrix."""
-        pos, orn = p.getBasePositionAndOrientation(self.table_id, physicsClientId=self._cid)
+        pos, orn = p.getBasePositionAndOrientation(self.tables[index].body, physicsClientId=self._cid)
         return np.asarray(pos), np.array(p.getMatrixFromQuaternion(orn)).reshape(3, 3)
 
-    def table_corners(self, z: float | None = None) -> np.ndarray:
+    def table_corners(self, z: float | None = None, index: int = 0) -> np.ndarray:
         """4 x 3 world corners of the table top (at height z above the feet, default top)."""
-        spec = self.table.spec
-        pos, rot = self.table_matrix()
+        table = self.tables[index]
+        spec = table.spec
+        pos, rot = self.table_matrix(index)
         height = spec.height if z is None else z
         local = np.array([[sx * spec.length / 2, sy * spec.width / 2,
-                           height - self.table.com_height]
+                           height - table.com_height]
                           for sx, sy in ((1, 1), (-1, 1), (-1, -1), (1, -1))])
         return np.asarray(local @ rot.T + pos)
 
-    def table_wall_distance(self) -> float:
+    def table_wall_distance(self, index: int = 0) -> float:
         """Smallest gap between the table top's footprint and a wall's inner face."""
         hw, hd = self.room.width / 2, self.room.depth / 2
-        corners = self.table_corners()
+        corners = self.table_corners(index=index)
         return float(max(0.0, min(np.min(hw - np.abs(corners[:, 0])),
                                   np.min(hd - np.abs(corners[:, 1])))))
 

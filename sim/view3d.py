@@ -81,8 +81,10 @@ def label(image: np.ndarray, text: str, at: tuple[int, int]) -> None:
 
 def status(image: np.ndarray, world: World) -> None:
     """The time, and whether the table is lifted or dropped, along the picture's top."""
-    lift = world.truth.table_pose()[2]
-    state = "TABLE DROPPED" if world.dropped else "table lifted" if lift >= LIFTED else "table on the floor"
+    lifts = [world.truth.table_pose(i)[2] for i in range(len(world.truth.tables))]
+    lift = max(lifts, default=0.0)
+    state = "TABLE DROPPED" if world.dropped else "table lifted" if lift >= LIFTED else \
+        "table on the floor" if lifts else ""
     minutes, seconds = divmod(world.time, 60)
     text = f"t = {int(minutes):02d}:{seconds:04.1f}   {state}"
     colour = (0, 0, 200) if world.dropped else (0, 120, 0) if lift >= LIFTED else (60, 60, 60)

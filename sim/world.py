@@ -1,22 +1,19 @@
-"""World: one pybullet DIRECT client holding a room, a table and the scenario's robots."""
+"""World: one pybullet DIRECT client holding a room, its tables and the scenario's robots."""
 
 from __future__ import annotations
 
-from functools import partial
 from typing import Any, Protocol
 
-import numpy as np
 import pybullet as p
 
-from sim.battery import Battery
-from sim.body import build_robot
 from sim.lifting import Lifting
-from sim.profile import DEFAULT_BODY, DEFAULT_MOTION, ROBOT_COLOURS, BodyGeometry, MotionProfile
+from sim.profile import DEFAULT_BODY, DEFAULT_MOTION, BodyGeometry, MotionProfile
 from sim.radio import Radio
 from sim.robot import Robot
 from sim.room import build_room, build_table
 from sim.scenario import Scenario
 from sim.scorer import Scorer
+from sim.team import AnyRobot, Bodies, make_robots
 from sim.truth import Truth
 
 
@@ -44,20 +41,17 @@ class World:
             p.setTimeStep(1.0 / physics_hz, physicsClientId=cid)
             p.setPhysicsEngineParameter(deterministicOverlappingPairs=1, physicsClientId=cid)
             room = build_room(cid, scenario.room)
-            table = build_table(cid, scenario.table)
-            starts = scenario.starts(seed)
-            bodies = {name: build_robot(cid, body, motion, ROBOT_COLOURS[i % len(ROBOT_COLOURS)],
-                                        starts[name]) for i, name in enumerate(starts)}
-            self._lifting = Lifting(cid, table, bodies, dt=1.0 / physics_hz)
-            self.robots: dict[str, Robot] = {
-                name: Robot(cid, name, b, motion, np.random.default_rng([seed, i, 0x0D0]),
-                            image_size, partial(self._lifting.holding, name),
-                            partial(self._lifting.load, name), Battery(scenario.battery))
-                for i, (name, b) in enumerate(bodies.items())}
-            self._lifting.bind(self.robots)
-            self.truth = Truth(cid, scenario.room, room, table, bodies)
-            self._scorer = Scorer(cid, self.truth, success_distance)
+            tables = [build_table(cid, spec) for spec in scenario.all_tables]
+            bodies = Bodies(cid, scenario, seed, body, motion)
+            self._liftings = [Lifting(cid, table, bodies.full, dt=1.0 / physics_hz) for table in tables]
+            self.robots: dict[str, AnyRobot] = make_robots(cid, scenario, seed, bodies, self._liftings,
+                                                           image_size, motion)
+            arms = {name: r for name, r in self.robots.items() if isinstance(r, Robot)}
+            for lifting in self._liftings:
+                lifting.bind(arms)
             self.radio = Radio(radio_latency, radio_loss, seed)
+            self.truth = Truth(cid, scenario.room, room, tables, bodies.full, bodies.ids)
+            self._scorer = Scorer(cid, self.truth, success_distance)
             self._steps = 0
             self._recorder = recorder
             self.labels: dict[str, str] = {}  # shown beside each robot's name in videos (role, behaviour)
@@ -95,18 +89,22 @@ class World:
                 robot._pre_step(dt)
             p.stepSimulation(physicsClientId=cid)
             self._steps += 1
-            self._lifting.update()
+            for lifting in self._liftings:
+                lifting.update()
             self._scorer.observe()
             self._capture()
-        bumps = self._scorer.take_bumps()
+        bumps, reads = self._scorer.take_bumps(), self.radio.take_reads()
         for name, robot in self.robots.items():
-            robot._after_advance(bumps[name], (self._steps - start) / self.physics_hz)
+            robot._after_advance(bumps[name], (self._steps - start) / self.physics_hz, reads.get(name, 0))
         self._scorer.check_poses()
 
     def fail(self, name: str) -> None:
         """Robot `name` fails: it stops, drops what it holds and goes silent on the radio."""
-        self.robots[name]._fail()
-        self._lifting.let_go(name)
+        robot = self.robots[name]
+        robot._fail()
+        if isinstance(robot, Robot):
+            for lifting in self._liftings:
+                lifting.let_go(name)
         self.radio.silence(name)
 
     def _capture(self) -> None:
@@ -116,17 +114,19 @@ class World:
 
     @property
     def dropped(self) -> bool:
-        return self._lifting.dropped or self._scorer.dropped
+        return any(lifting.dropped for lifting in self._liftings) or self._scorer.dropped
 
     def poses(self) -> dict[str, Any]:
         """Where everything is (ground truth, for people watching: the monitor's room view), rounded
         to the millimetre and the tenth of a milliradian."""
         truth, room = self.truth, self.scenario.room
         robots = {name: [round(v, 4) for v in truth.robot_pose(name)] for name in self.robots}
-        x, y, lift, yaw = truth.table_pose()
-        spec = truth.table.spec
-        table = [round(x, 4), round(y, 4), round(yaw, 4), spec.length, spec.width, round(lift, 4)]
-        return {"room": [room.width, room.depth], "robots": robots, "tables": [table]}
+        tables = []
+        for i, body in enumerate(truth.tables):
+            x, y, lift, yaw = truth.table_pose(i)
+            tables.append([round(x, 4), round(y, 4), round(yaw, 4), body.spec.length, body.spec.width,
+                           round(lift, 4)])
+        return {"room": [room.width, room.depth], "robots": robots, "tables": tables}
 
     def score(self) -> dict[str, Any]:
         """Ground-truth outcome; see sim.scorer.Scorer.score for the keys."""

@@ -1,0 +1,9 @@
+"""Primitives that drive a robot by velocity commands to points of its odometry frame: for the
+light bodies of team scenarios (whose odometry is in the room's frame), usable by any body."""
+
+from __future__ import annotations
+
+from behaviours.drive.goto import go_to, stop
+from hfsm.primitive import Primitive
+
+PRIMITIVES: tuple[Primitive, ...] = (go_to, stop)

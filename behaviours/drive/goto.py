@@ -1,0 +1,93 @@
+"""go_to: drive to a point (plus a formation offset) by odometry, tick by tick; stop.
+
+The robot steers by what it senses: its odometry, and the points of others it was told over the
+radio (`avoid`), never the simulator's poses.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from behaviours.approach.frames import odom_to_body, wrap
+from hfsm.primitive import Context, Outcome, primitive
+
+Point = tuple[float, float]
+BRAKE, CREEP = 2.0, 0.05
+
+
+def goal_point(start: Point, x: float, y: float, offset: list[float], frame: str) -> Point:
+    """The point `(x, y)` plus `offset` [dx, dy]: in the odometry frame (`frame: odometry`), or in
+    the frame of travel (`frame: travel`, x along the line from `start` to the point, y to its
+    left), so that robots given the same point and different offsets keep a formation's shape."""
+    dx, dy = (float(offset[0]), float(offset[1])) if offset else (0.0, 0.0)
+    if frame == "travel":
+        heading = math.atan2(y - start[1], x - start[0])
+        c, s = math.cos(heading), math.sin(heading)
+        dx, dy = c * dx - s * dy, s * dx + c * dy
+    elif frame != "odometry":
+        raise ValueError(f"frame is 'odometry' or 'travel', not {frame!r}")
+    return (x + dx, y + dy)
+
+
+def steer(here: tuple[float, float, float], goal: Point, speed: float, avoid: list[Point],
+          clearance: float) -> tuple[float, float, float]:
+    """Body-frame velocity (forward, left, turn): towards the goal, braking near it (BRAKE m/s per
+    metre left, never below CREEP), pushed away from points nearer than `clearance`, turning to face
+    the way it goes."""
+    gx, gy = goal[0] - here[0], goal[1] - here[1]
+    dist = math.hypot(gx, gy)
+    pace = min(speed, BRAKE * dist + CREEP)
+    vx, vy = (gx / dist * pace, gy / dist * pace) if dist > 1e-9 else (0.0, 0.0)
+    for ox, oy in avoid:
+        rx, ry = here[0] - ox, here[1] - oy
+        gap = math.hypot(rx, ry)
+        if 1e-9 < gap < clearance:
+            push = speed * (clearance - gap) / clearance * 2.0
+            vx, vy = vx + rx / gap * push, vy + ry / gap * push
+    forward, left = odom_to_body((0.0, 0.0, here[2]), (vx, vy))
+    turn = wrap(math.atan2(vy, vx) - here[2]) * 2.0 if math.hypot(vx, vy) > 0.05 * speed else 0.0
+    return forward, left, turn
+
+
+def _points(avoid: list[Any]) -> list[Point]:
+    return [(float(p[0]), float(p[1])) if isinstance(p, list | tuple) else (float(p["x"]), float(p["y"]))
+            for p in avoid]
+
+
+@primitive(outcomes=["arrived", "timeout"], outputs=["x", "y"], world="sim")
+def go_to(ctx: Context, *, x: float, y: float, offset: list[float] | None = None, frame: str = "odometry",
+          relative: bool = False, tolerance: float = 0.1, speed: float = 0.0,
+          avoid: list[Any] | None = None, clearance: float = 0.6, timeout: float = 120.0) -> Outcome:
+    """Drive to the point (x, y) of the odometry frame (`relative`: that far from where it is) plus a
+    formation `offset` [dx, dy] (see `frame`), at `speed` m/s (0: the body's top speed), keeping
+    `clearance` metres from the `avoid` points ([x, y] or {x, y}: where others said they are);
+    `arrived` within `tolerance` metres."""
+    robot = ctx.robot
+    start = robot.odometry()
+    if relative:
+        x, y = start[0] + x, start[1] + y
+    goal = goal_point(start[:2], x, y, offset or [], frame)
+    top = robot.profile.forward_max
+    pace = min(speed, top) if speed > 0 else top
+    others = _points(avoid or [])
+    deadline = ctx.time + timeout
+    try:
+        while True:
+            here = robot.odometry()
+            if math.hypot(goal[0] - here[0], goal[1] - here[1]) <= tolerance:
+                return Outcome("arrived", x=round(here[0], 6), y=round(here[1], 6))
+            if ctx.time >= deadline:
+                return Outcome("timeout", x=round(here[0], 6), y=round(here[1], 6))
+            robot.set_velocity(*steer(here, goal, pace, others, clearance))
+            ctx.wait()
+    finally:
+        robot.stop()
+
+
+@primitive(outcomes=["done"], world="sim")
+def stop(ctx: Context) -> str:
+    """Stop at once (velocity zero), and wait one tick for the body to settle its command."""
+    ctx.robot.stop()
+    ctx.wait()
+    return "done"

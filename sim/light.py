@@ -1,0 +1,74 @@
+"""Light robots: a camera-less cylinder that drives by velocity commands, for teams of tens (the
+TARARC allocation experiments). No head, no arms, no cameras: it senses its odometry (in the
+room's frame, from the start pose the scenario tells it), its battery and bumps, and hears the
+radio. It collides with walls, tables and other robots like the humanoid does."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+import pybullet as p
+
+from sim.base import Base, Chassis, Pose
+from sim.battery import Battery
+from sim.profile import MotionProfile
+
+
+@dataclass(frozen=True)
+class LightGeometry:
+    radius: float = 0.15
+    height: float = 0.30
+    mass: float = 3.0
+    hover: float = 0.003
+    max_force: float = 120.0
+
+
+LIGHT_BODY = LightGeometry()
+LIGHT_MOTION = MotionProfile(forward_max=0.5, backward_max=0.5, sideways_max=0.5, turn_max=2.0)
+
+
+def light_motion(speed: float | None) -> MotionProfile:
+    """The light body's limits, with its top speed (any direction) set to `speed` m/s."""
+    if speed is None:
+        return LIGHT_MOTION
+    return replace(LIGHT_MOTION, forward_max=speed, backward_max=speed, sideways_max=speed)
+
+
+def build_light(cid: int, g: LightGeometry, colour: tuple[float, float, float], pose: Pose) -> Chassis:
+    col = p.createCollisionShape(p.GEOM_CYLINDER, radius=g.radius, height=g.height,
+                                 collisionFramePosition=[0, 0, g.height / 2], physicsClientId=cid)
+    vis = p.createVisualShapeArray(
+        [p.GEOM_CYLINDER, p.GEOM_BOX], radii=[g.radius, 0.0], lengths=[g.height, 0.0],
+        halfExtents=[[0, 0, 0], [g.radius * 0.45, 0.02, 0.01]],
+        visualFramePositions=[[0, 0, g.height / 2], [g.radius * 0.5, 0, g.height + 0.01]],
+        rgbaColors=[[*colour, 1.0], [0.1, 0.1, 0.1, 1.0]], physicsClientId=cid)
+    x, y, yaw = pose
+    orn = p.getQuaternionFromEuler([0.0, 0.0, yaw])
+    body = int(p.createMultiBody(g.mass, col, vis, basePosition=[x, y, g.hover], baseOrientation=orn,
+                                 physicsClientId=cid))
+    mocap = p.createConstraint(body, -1, -1, -1, p.JOINT_FIXED, [0, 0, 0], [0, 0, 0],
+                               [x, y, g.hover], childFrameOrientation=orn, physicsClientId=cid)
+    p.changeConstraint(mocap, maxForce=g.max_force, physicsClientId=cid)
+    return Chassis(body=body, mocap=int(mocap), hover=g.hover, max_force=g.max_force)
+
+
+class LightRobot(Base):
+    """A light body: see `Base` for what it commands and senses. Its odometry starts at the start
+    pose the scenario gives it (room frame, degrees turned to radians), not at the true (jittered)
+    one: the jitter is its error of localisation."""
+
+    body_kind = "light"
+
+    def __init__(self, cid: int, name: str, chassis: Chassis, motion: MotionProfile,
+                 rng: np.random.Generator, told_start: Pose, battery: Battery | None = None) -> None:
+        super().__init__(cid, name, chassis, motion, rng, battery, told_start)
+
+    def holding(self) -> bool:
+        """A light body has no hands."""
+        return False
+
+
+def told_pose(x: float, y: float, yaw_degrees: float) -> Pose:
+    return (x, y, math.radians(yaw_degrees))

@@ -1,0 +1,74 @@
+"""The scenario's robots as bodies and robots, in scenario order: humanoids (`body: full`) and
+light cylinders (`body: light`); and the hands of the humanoids over every table of the room."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from functools import partial
+
+import numpy as np
+
+from sim.base import Chassis
+from sim.battery import Battery
+from sim.body import RobotBody, build_robot
+from sim.lifting import Lifting
+from sim.light import LIGHT_BODY, LightRobot, build_light, light_motion, told_pose
+from sim.profile import ROBOT_COLOURS, BodyGeometry, MotionProfile
+from sim.robot import Robot
+from sim.scenario import Scenario
+
+AnyRobot = Robot | LightRobot
+
+
+class Bodies:
+    """The pybullet bodies of the scenario's robots, built in scenario order."""
+
+    def __init__(self, cid: int, scenario: Scenario, seed: int, body: BodyGeometry,
+                 motion: MotionProfile) -> None:
+        self.full: dict[str, RobotBody] = {}
+        self.light: dict[str, Chassis] = {}
+        self.ids: dict[str, int] = {}
+        for i, (name, pose) in enumerate(scenario.starts(seed).items()):
+            colour = ROBOT_COLOURS[i % len(ROBOT_COLOURS)]
+            if scenario.robots[name].body == "full":
+                built = self.full[name] = build_robot(cid, body, motion, colour, pose)
+                self.ids[name] = built.body
+            else:
+                chassis = self.light[name] = build_light(cid, LIGHT_BODY, colour, pose)
+                self.ids[name] = chassis.body
+
+
+class Hands:
+    """A humanoid's hands over all the tables: each table has its own lifting rules."""
+
+    def __init__(self, liftings: list[Lifting]) -> None:
+        self._liftings = liftings
+
+    def holding(self, name: str) -> bool:
+        return any(lifting.holding(name) for lifting in self._liftings)
+
+    def load(self, name: str) -> tuple[np.ndarray, np.ndarray]:
+        for lifting in self._liftings:
+            if lifting.holding(name):
+                return lifting.load(name)
+        return np.zeros(3), np.zeros((2, 3))
+
+
+def make_robots(cid: int, scenario: Scenario, seed: int, bodies: Bodies, liftings: list[Lifting],
+                image_size: tuple[int, int], motion: MotionProfile) -> dict[str, AnyRobot]:
+    hands = Hands(liftings)
+    robots: dict[str, AnyRobot] = {}
+    for i, (name, start) in enumerate(scenario.robots.items()):
+        rng = np.random.default_rng([seed, i, 0x0D0])
+        battery = Battery(scenario.battery_of(name))
+        if name in bodies.full:
+            own = motion if start.speed is None else replace(motion, forward_max=start.speed)
+            if len(liftings) == 1:  # the paper's room: the one table's rules, as they were
+                holding, load = partial(liftings[0].holding, name), partial(liftings[0].load, name)
+            else:
+                holding, load = partial(hands.holding, name), partial(hands.load, name)
+            robots[name] = Robot(cid, name, bodies.full[name], own, rng, image_size, holding, load, battery)
+        else:
+            robots[name] = LightRobot(cid, name, bodies.light[name], light_motion(start.speed), rng,
+                                      told_pose(start.x, start.y, start.yaw), battery)
+    return robots
