@@ -82,6 +82,7 @@ class SimWorld:
         self._outputs = list(outputs)
         self._next_progress = progress_every
         self._senses: dict[str, Senses] = {}
+        self._radio_delay: dict[str, float] = {}  # receiver -> what its latest message took
         self._failures = world.scenario.failure_times(world.seed)
 
     @property
@@ -104,6 +105,8 @@ class SimWorld:
         return SIM_INPUTS
 
     def read_input(self, agent: str, name: str, tick: int) -> Any:
+        if name == "radio_delay":
+            return self._radio_delay.get(agent, 0.0)
         senses = self._senses.get(agent)
         if senses is None:
             own = list(self.world.robots).index(agent)  # robots wear the colours in scenario order
@@ -114,7 +117,10 @@ class SimWorld:
         self.world.radio.send(message.sender, message.to, message, message.sent_tick * self.dt)
 
     def collect(self, tick: int) -> list[Message]:
-        return [payload for _, _, payload in self.world.radio.deliver(tick * self.dt)]
+        messages: list[Message] = [payload for _, _, payload in self.world.radio.deliver(tick * self.dt)]
+        for message in messages:  # stamped when sent, read when heard, by the robots' synchronised clocks
+            self._radio_delay[message.to] = round((tick - message.sent_tick) * self.dt, 6)
+        return messages
 
     def next_delivery(self) -> int | None:
         return None

@@ -157,12 +157,15 @@ class Arcs(Calls):
         raise AssertionError("a checked choice ends with else")
 
     def _watch(self, frame: Frame, state: RState) -> Event | None:
-        """The first watch that holds, as the event that takes its arc (None: none holds, or it stays)."""
+        """The first watch that holds, as the event that takes its arc (None: none holds).
+
+        A watch back to this state is passed over (SPEC 12): the state stays, and the watches after
+        it are tried, so a machine's watch into a state does not silence that state's own."""
         for watch in state.watches:
             try:
                 holds = watch.condition(frame.scope)
             except ExprValueError as exc:
                 return Event("error", error=f"watch '{watch.text}': {exc}")
-            if holds:  # the first that holds decides; one back to this state stays (XABSL's `stay`)
-                return None if watch.target is state else Event(watch.text, goto=watch.target)
+            if holds and watch.target is not state:
+                return Event(watch.text, goto=watch.target)
         return None

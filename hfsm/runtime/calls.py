@@ -145,6 +145,8 @@ class Calls(Cancelling):
                 if output in event.outputs:
                     frame.vars[var] = event.outputs[output]
                     frame.vars_shown = False
+            if frame.state.watches:
+                self.wake = True  # a watch may read what the attempt saved
 
     def _count_of(self, times: Any, frame: Frame, what: str) -> int | Event:
         if times.__class__ is int:

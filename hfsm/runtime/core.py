@@ -42,6 +42,7 @@ class Core:
         self.running = len(agents)  # agents whose top machine has not ended
         self.spans: dict[float, int] = {}  # seconds -> ticks, for spans seen before
         self.team = Team(self)  # barriers (SPEC 14)
+        self.wake = False  # vars changed after a state's watches were tried: its next tick is due
 
     @property
     def time(self) -> float:

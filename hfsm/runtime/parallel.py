@@ -51,6 +51,8 @@ class Parallel(Arcs):
     def _region_ended(self, region: Region, event: Event) -> None:
         region.below = None
         region.result = event
+        if region.owner.state.watches:
+            self.wake = True  # a watch may read what the region saved or set
         if event.name == "error":
             if not event.origin:
                 event.origin = "/".join(region.path())

@@ -53,11 +53,14 @@ class SideExtent:
 
 @dataclass(frozen=True)
 class WallSeen:
-    """The floor-wall line to one side: `distance` (m) from the body centre to it."""
+    """The floor-wall line to one side: `distance` (m) from the body centre to it, and `normal`
+    (rad, body frame, counter-clockwise from forward): the direction from the body centre to
+    its nearest point, square to the wall. A wall square to the side axis has normal +-pi/2."""
 
     found: bool
     distance: float = math.nan
     points: int = 0
+    normal: float = math.nan
 
 
 NO_EDGE, NO_EXTENT, NO_WALL = NearEdge(False), SideExtent(False), WallSeen(False)
@@ -182,4 +185,6 @@ def wall_to_side(image: np.ndarray, camera: Camera, side: str,
 def _wall_line(xs: np.ndarray, ys: np.ndarray) -> WallSeen:
     pts = np.column_stack([xs, ys]).astype(np.float32)
     dx, dy, x0, y0 = (float(v) for v in cv2.fitLine(pts, cv2.DIST_HUBER, 0, 0.01, 0.01).ravel())
-    return WallSeen(True, distance=abs(x0 * dy - y0 * dx), points=int(pts.shape[0]))
+    offset = x0 * dy - y0 * dx  # the line is (-dy, dx) . p = -offset
+    nx, ny = (dy, -dx) if offset > 0 else (-dy, dx)
+    return WallSeen(True, distance=abs(offset), points=int(pts.shape[0]), normal=math.atan2(ny, nx))

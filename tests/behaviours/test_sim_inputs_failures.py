@@ -39,7 +39,16 @@ SENSE = """
             battery: "${in.battery}"
             gives: ["${in.hand_give_left}", "${in.hand_give_right}"]
             holding: "${in.holding}"
+            delay: "${in.radio_delay}"
         on: {done: done}
+"""
+HEAR = """
+    vars: {before: -1.0}
+    outcomes: [done]
+    outputs: {before: "${vars.before}", after: "${in.radio_delay}"}
+    states:
+      start: {do: set, with: {before: "${in.radio_delay}"}, on: {done: meet}}
+      meet: {do: barrier, with: {name: go}, on: {passed: done}}
 """
 
 
@@ -66,6 +75,18 @@ def test_inputs_are_what_each_robot_senses(
         assert seen["pose"] == {"x": 0.0, "y": 0.0, "yaw": 0.0}  # standing still: odometry at its start
         assert seen["battery"] == pytest.approx(0.49)
         assert (seen["gives"], seen["holding"]) == ([0.0, 0.0], False)
+        assert seen["delay"] == 0.0  # nothing heard yet
+
+
+def test_radio_delay_is_what_the_latest_notice_took(
+    machine: Machine, capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    argv = (machine("hear", HEAR), "--world", "sim", "--json", "--no-video", "--out", tmp_path, "--quiet",
+            "--radio-latency", "0.7")
+    code, out, _ = run(capsys, *argv)
+    agents = json.loads(out)["agents"]
+    assert code == 0
+    assert [agents[r]["outputs"] for r in ("r1", "r2")] == [{"before": 0.0, "after": 0.7}] * 2
 
 
 def test_check_knows_the_sim_inputs(machine: Machine, capsys: pytest.CaptureFixture[str]) -> None:
