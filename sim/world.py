@@ -84,13 +84,16 @@ class World:
         end = round((self.time + seconds) * self.physics_hz)
         start = self._steps
         robots = list(self.robots.values())
+        raised = any(r._arms_active() for r in robots if isinstance(r, Robot))  # commands hold over the span
+        for robot in robots:
+            robot._before_advance(dt)
         while self._steps < end:
             for robot in robots:
                 robot._pre_step(dt)
             p.stepSimulation(physicsClientId=cid)
             self._steps += 1
             for lifting in self._liftings:
-                lifting.update()
+                lifting.update(raised)
             self._scorer.observe()
             self._capture()
         bumps, reads = self._scorer.take_bumps(), self.radio.take_reads()

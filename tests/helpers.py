@@ -58,3 +58,19 @@ def load_tool(name: str) -> ModuleType:
     sys.modules[name] = module  # dataclasses look their module up while the class is made
     spec.loader.exec_module(module)
     return module
+
+
+def check_nesting(records: list[dict[str, Any]]) -> None:
+    """Every enter has its exit; a path enters inside an open one and exits after all below it."""
+    open_paths: dict[str, set[tuple[str, ...]]] = {}
+    for record in records:
+        opened = open_paths.setdefault(record["agent"], set())
+        path = tuple(record["path"])
+        if record["kind"] == "enter":
+            assert path not in opened and (len(path) == 1 or path[:-1] in opened), (opened, record)
+            opened.add(path)
+        elif record["kind"] == "exit":
+            assert path in opened, (opened, record)
+            assert not any(p[: len(path)] == path and p != path for p in opened), (opened, record)
+            opened.remove(path)
+    assert all(not s for s in open_paths.values()), open_paths

@@ -40,49 +40,57 @@ class Arcs(Calls):
             frame, ended = caller, after
 
     def _run(self, frame: Frame, event: Event) -> Event | None:
+        """Take arcs in `frame` until its state waits (None) or its machine ends (that ending)."""
         while True:
-            target = self._arc(frame, event)
+            state = frame.state
+            name = event.name
+            target: RState | str | None
+            if event.goto is None and event.message is None and name != "error":
+                target = state.arcs.get(name)
+                if target is None:
+                    error = f"'{state.do}' ended with '{name}', which is not one of its outcomes"
+                    event = Event("error", error=error)
+                    continue
+                if state.save and event.outputs:
+                    self._save(frame, state.save, event.outputs)
+            else:
+                target = self._other_target(frame, state, event)
+            if self.trace is not None:
+                self._arc_record(frame, state, event, target)
+            do = state.do
+            if do:  # _leave's statistics, without its call
+                stats = frame.agent.stats.get(do) or frame.agent.new_stats(do)
+                stats.calls += 1
+                stats.ticks += self.tick - frame.entered
+                stats.events[name] = stats.events.get(name, 0) + 1
             if target is None:
                 return event  # an unmapped error ends the machine and passes to its caller
             if target.__class__ is str:
-                return self._finish(frame, target)
+                ending = frame.machine.endings.get(target)  # _finish's work for a machine without outputs
+                return ending if ending is not None else self._finish(frame, target)
             entered = self._enter(frame, target)  # type: ignore[arg-type]
             if entered is None:
                 return None
             event = entered
 
-    def _arc(self, frame: Frame, event: Event) -> RState | str | None:
-        state = frame.state
-        name = event.name
-        target: RState | str | None
+    def _other_target(self, frame: Frame, state: RState, event: Event) -> RState | str | None:
+        """The target of a choice's branch or a watch (goto), an error, or a message."""
         if event.goto is not None:
-            target = event.goto
-        elif name == "error":
-            if not event.origin:
-                event.origin = "/".join(frame.path())
-                self.emit(frame.agent, frame.path(), "error", message=event.error)
-            target = state.error_target
-        elif event.message is not None:
-            target = state.msg_arcs[name]
-        else:
-            found = state.arcs.get(name)
-            if found is None:
-                error = f"'{state.do}' ended with '{name}', which is not one of its outcomes"
-                return self._arc(frame, Event("error", error=error))
-            target = found
-            if state.save and event.outputs:
-                for var, output in state.save:
-                    if output in event.outputs:
-                        frame.vars[var] = event.outputs[output]
-                        frame.vars_shown = False
-        if self.trace is not None:
-            shown = target.name if target.__class__ is RState else target
-            extra = self._vars_of(frame)
-            if state.do == "barrier" and event.outputs:
-                extra["arrived"] = event.outputs.get("arrived")  # who the barrier heard (the monitor)
-            self.emit(frame.agent, frame.path(), "event", event=name, target=shown, **extra)
-        self._leave(frame, name)
-        return target
+            return event.goto
+        if event.message is not None and event.name != "error":
+            return state.msg_arcs[event.name]
+        if not event.origin:
+            event.origin = "/".join(frame.path())
+            self.emit(frame.agent, frame.path(), "error", message=event.error)
+        return state.error_target
+
+    def _arc_record(self, frame: Frame, state: RState, event: Event, target: RState | str | None) -> None:
+        shown = target.name if target.__class__ is RState else target
+        extra = self._vars_of(frame)
+        if state.do == "barrier" and event.outputs:
+            extra["arrived"] = event.outputs.get("arrived")  # who the barrier heard (the monitor)
+        self.emit(frame.agent, frame.path(), "event", event=event.name, target=shown, **extra)
+        self.emit(frame.agent, frame.path(), "exit", event=event.name)
 
     def _enter(self, frame: Frame, state: RState) -> Event | None:
         agent = frame.agent

@@ -67,17 +67,21 @@ class Core:
         """The trace's `exit` of a frame's current state, and the statistics of its behaviour."""
         if self.trace is not None:
             self.emit(frame.agent, frame.path(), "exit", event=event)
-        do = frame.state.do
-        if do:
-            stats = frame.agent.stats.get(do) or frame.agent.new_stats(do)
-            stats.calls += 1
-            stats.ticks += self.tick - frame.entered
-            stats.events[event] = stats.events.get(event, 0) + 1
+        if frame.state.do:
+            self._count(frame.agent, frame.state.do, frame.entered, event)
 
     def _region_left(self, region: Region, event: str) -> None:
         if self.trace is not None:
             self.emit(region.owner.agent, region.path(), "exit", event=event)
         self._count(region.owner.agent, region.spec.do, region.owner.entered, event)
+
+    @staticmethod
+    def _save(frame: Frame, save: tuple[tuple[str, str], ...], outputs: dict[str, Any]) -> None:
+        """A state's `save`: the callee's outputs it names, into the machine's vars."""
+        for var, output in save:
+            if output in outputs:
+                frame.vars[var] = outputs[output]
+                frame.vars_shown = False
 
     def _count(self, agent: Agent, behaviour: str, entered: int, event: str) -> None:
         stats = agent.stats.get(behaviour) or agent.new_stats(behaviour)
@@ -99,7 +103,6 @@ class Core:
     # --- defined by the layers above -----------------------------------------------------------
 
     def _run(self, frame: Frame, event: Event) -> Event | None:
-        """Take arcs in `frame` until its state waits (None) or its machine ends (that ending)."""
         raise NotImplementedError
 
     def _enter(self, frame: Frame, state: RState) -> Event | None:

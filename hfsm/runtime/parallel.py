@@ -58,11 +58,7 @@ class Parallel(Arcs):
                 event.origin = "/".join(region.path())
                 self.emit(region.owner.agent, region.path(), "error", message=event.error)
         elif region.spec.save and event.outputs:
-            owner_vars = region.owner.vars
-            for var, output in region.spec.save:
-                if output in event.outputs:
-                    owner_vars[var] = event.outputs[output]
-                    region.owner.vars_shown = False
+            self._save(region.owner, region.spec.save, event.outputs)
         self._region_left(region, event.name)
 
     def _region_failed(self, frame: Frame, event: Event) -> Event:

@@ -67,18 +67,17 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
                 engine.start(agent, top, options.params)
         while engine.running:
             following = _next_tick(engine, failures) if world.static else engine.tick + 1
-            if following is None:
-                return "blocked forever: " + _where(agents), ""
-            if following > last:
-                engine.tick = max(engine.tick, last)
-                return f"stopped at --max-time {options.max_time:g} s: " + _where(agents), ""
+            if following is None or following > last:
+                return _stopped(engine, following, last, options.max_time), ""
             if not world.static:
                 world.advance(engine.tick)
                 _world_records(engine, world_records, following)
             engine.tick = following
             if failures.due or not world.static:
                 failures.apply(following)
-            engine.deliver(world.collect(following))
+            arrived = world.collect(following)
+            if arrived:
+                engine.deliver(arrived)
             for agent in agents:
                 if agent.result is None:
                     agent.entries = 0
@@ -88,6 +87,14 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
     except FatalError as exc:
         return exc.args[0], exc.traceback
     return None, ""
+
+
+def _stopped(engine: Engine, following: int | None, last: int, max_time: float) -> str:
+    """Why a run stops before every agent ended: nothing can happen any more, or --max-time."""
+    if following is None:
+        return "blocked forever: " + _where(engine.agents)
+    engine.tick = max(engine.tick, last)
+    return f"stopped at --max-time {max_time:g} s: " + _where(engine.agents)
 
 
 WorldRecords = Callable[[int], list[dict[str, Any]]]

@@ -105,6 +105,7 @@ RUNS: dict[str, tuple[list[str], int, dict[str, Any]]] = {
     # section 13: the example as written, and the edges of retries
     "navigate": ([], 0, one("done", 6.0, {"tried": 3})),
     "retry_edges": ([], 0, one("halted", 1.45, {"tried": [0.7]})),
+    "attempt": ([], 0, one("gave_up", 2.25)),
     # section 14: barriers
     "meet": (
         ["--agents", "a,b,c"],

@@ -8,7 +8,7 @@ from pathlib import Path
 from typing import Any
 
 import yaml
-from helpers import execute
+from helpers import check_nesting, execute
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -137,22 +137,6 @@ def _run(tmp_path: Path, machine: dict[str, Any], max_time: float) -> tuple[Any,
     return execute(tmp_path / "top.yaml", agents=["a", "b"], max_time=max_time)
 
 
-def _check_nesting(records: list[dict[str, Any]]) -> None:
-    """Every enter has its exit; a path enters inside an open one and exits after all below it."""
-    open_paths: dict[str, set[tuple[str, ...]]] = {}
-    for record in records:
-        opened = open_paths.setdefault(record["agent"], set())
-        path = tuple(record["path"])
-        if record["kind"] == "enter":
-            assert path not in opened and (len(path) == 1 or path[:-1] in opened), (opened, record)
-            opened.add(path)
-        elif record["kind"] == "exit":
-            assert path in opened, (opened, record)
-            assert not any(p[: len(path)] == path and p != path for p in opened), (opened, record)
-            opened.remove(path)
-    assert all(not s for s in open_paths.values()), open_paths
-
-
 @given(machines())
 def test_never_crashes_and_every_enter_has_its_exit(
     tmp_path_factory: Any, drawn: tuple[dict[str, Any], Any]
@@ -160,7 +144,7 @@ def test_never_crashes_and_every_enter_has_its_exit(
     machine, _ = drawn
     result, records = _run(tmp_path_factory.mktemp("m"), machine, max_time=5)
     assert set(result.agents) == {"a", "b"}
-    _check_nesting(records)
+    check_nesting(records)
 
 
 @given(machines().filter(lambda drawn: drawn[1] is not None))
@@ -189,4 +173,4 @@ def test_a_complete_join_never_hangs(tmp_path_factory: Any, machine: dict[str, A
     result, records = _run(tmp_path_factory.mktemp("m"), machine, max_time=10)
     assert result.error is None, result.error
     assert all(r.outcome in OUTCOMES for r in result.agents.values())
-    _check_nesting(records)
+    check_nesting(records)
