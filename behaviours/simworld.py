@@ -23,7 +23,8 @@ from sim import Scenario, World, resolve
 from sim.recorder import Recorder
 from sim.team import AnyRobot
 
-SCORE_KEYS = ("success", "table_wall_distance", "dropped", "robot_collisions", "time")
+SCORE_KEYS = ("success", "table_wall_distance", "dropped", "robot_collisions", "time")  # table_to_wall
+ROBOT_KEYS = ("robot_collisions", "time")  # a scenario with no task
 
 
 def load_scenario(name_or_path: str) -> tuple[Scenario, str]:
@@ -163,8 +164,13 @@ class SimWorld:
         print(line, end=end, file=sys.stderr, flush=True)
 
     def report(self) -> dict[str, Any]:
+        """The scenario's task and its score; for a scenario with no task, only what the robots did
+        (collisions between them, the time), nothing about furniture."""
         score = self.world.score()
-        return {"score": {k: score[k] for k in SCORE_KEYS}}
+        task = self.world.scenario.task
+        if task is None:
+            return {"score": {k: score[k] for k in ROBOT_KEYS}}
+        return {"task": task, "score": {k: score[k] for k in SCORE_KEYS}}
 
     def close(self) -> list[str]:
         if self.progress_every and sys.stderr.isatty():

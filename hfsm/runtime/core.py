@@ -34,7 +34,7 @@ class Core:
         for agent in agents:
             agent.clock = self
         self.by_name = {a.name: a for a in agents}
-        self.world = world
+        self.world: World = world
         self.dt = dt
         self.trace = trace
         self.tick = 0
