@@ -58,7 +58,7 @@ class JsonlTrace:
     """
 
     SAVE_SECONDS = 0.25
-    SAVE_PIECES = 4096
+    SAVE_PIECES = 1024
 
     def __init__(self, path: Path) -> None:
         self.path = path
