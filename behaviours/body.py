@@ -8,7 +8,6 @@ if the interpreter cancels the primitive meanwhile, `Cancelled` comes out of the
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 
 import numpy as np
 
@@ -32,16 +31,6 @@ class Body:
         finally:
             self.robot.stop()
 
-    def _hold_until(self, forward: float, sideways: float, turn: float, seconds: float,
-                    stop: Callable[[], bool]) -> bool:
-        if seconds <= 0:
-            return False
-        self.robot.set_velocity(forward, sideways, turn)
-        try:
-            return self.ctx.wait_until(stop, seconds)
-        finally:
-            self.robot.stop()
-
     def walk(self, distance: float) -> None:
         """Forward (negative: backward) by about `distance` metres."""
         speed = self.motion.forward_max if distance >= 0 else self.motion.backward_max
@@ -51,11 +40,6 @@ class Body:
         """Sideways by about `distance` metres, left positive."""
         speed = self.motion.sideways_max
         self._hold(0.0, math.copysign(speed, distance), 0.0, abs(distance) / speed)
-
-    def crab_until(self, distance: float, stop: Callable[[], bool]) -> bool:
-        """Crab as `crab` does, checking `stop()` every tick; True if it stopped the move early."""
-        speed = self.motion.sideways_max
-        return self._hold_until(0.0, math.copysign(speed, distance), 0.0, abs(distance) / speed, stop)
 
     def turn(self, angle: float) -> None:
         """On the spot by about `angle` radians, left (counter-clockwise) positive."""

@@ -1,7 +1,8 @@
 """The inputs the sim world declares (SPEC 12): what machines read as `in.NAME`.
 
 Declarations only, so that `hfsm-run --check` knows them without starting the simulator; the
-values come from `behaviours.senses`, from what a robot senses.
+values come from `behaviours.senses`, from what a robot senses (`radio_delay` from what its radio
+hears, in `behaviours.simworld`).
 """
 
 from __future__ import annotations
@@ -38,6 +39,12 @@ SIM_INPUTS: Mapping[str, InputSpec] = {
             "odometry, {x: metres, y: metres, yaw: degrees, left positive}: in the robot's own start "
             "frame (full body), or in the room's frame from the start pose the scenario tells it "
             "(light body)",
+        ),
+        InputSpec(
+            "radio_delay",
+            "float",
+            "seconds the latest message or barrier notice this robot heard took on the radio (its "
+            "sender's time stamp to its arrival, by the robots' synchronised clocks); 0 before any",
         ),
         InputSpec("battery", "float", "the battery's charge, 0 (empty: the robot fails) to 1 (full)"),
         InputSpec(

@@ -23,7 +23,8 @@ from sim import Scenario, World, resolve
 from sim.recorder import Recorder
 from sim.team import AnyRobot
 
-SCORE_KEYS = ("success", "table_wall_distance", "dropped", "robot_collisions", "time")
+SCORE_KEYS = ("success", "table_wall_distance", "dropped", "robot_collisions", "time")  # table_to_wall
+ROBOT_KEYS = ("robot_collisions", "time")  # a scenario with no task
 
 
 def load_scenario(name_or_path: str) -> tuple[Scenario, str]:
@@ -82,6 +83,7 @@ class SimWorld:
         self._outputs = list(outputs)
         self._next_progress = progress_every
         self._senses: dict[str, Senses] = {}
+        self._radio_delay: dict[str, float] = {}  # receiver -> what its latest message took
         self._failures = world.scenario.failure_times(world.seed)
 
     @property
@@ -104,6 +106,8 @@ class SimWorld:
         return SIM_INPUTS
 
     def read_input(self, agent: str, name: str, tick: int) -> Any:
+        if name == "radio_delay":
+            return self._radio_delay.get(agent, 0.0)
         senses = self._senses.get(agent)
         if senses is None:
             own = list(self.world.robots).index(agent)  # robots wear the colours in scenario order
@@ -114,7 +118,10 @@ class SimWorld:
         self.world.radio.send(message.sender, message.to, message, message.sent_tick * self.dt)
 
     def collect(self, tick: int) -> list[Message]:
-        return [payload for _, _, payload in self.world.radio.deliver(tick * self.dt)]
+        messages: list[Message] = [payload for _, _, payload in self.world.radio.deliver(tick * self.dt)]
+        for message in messages:  # stamped when sent, read when heard, by the robots' synchronised clocks
+            self._radio_delay[message.to] = round((tick - message.sent_tick) * self.dt, 6)
+        return messages
 
     def next_delivery(self) -> int | None:
         return None
@@ -157,8 +164,13 @@ class SimWorld:
         print(line, end=end, file=sys.stderr, flush=True)
 
     def report(self) -> dict[str, Any]:
+        """The scenario's task and its score; for a scenario with no task, only what the robots did
+        (collisions between them, the time), nothing about furniture."""
         score = self.world.score()
-        return {"score": {k: score[k] for k in SCORE_KEYS}}
+        task = self.world.scenario.task
+        if task is None:
+            return {"score": {k: score[k] for k in ROBOT_KEYS}}
+        return {"task": task, "score": {k: score[k] for k in SCORE_KEYS}}
 
     def close(self) -> list[str]:
         if self.progress_every and sys.stderr.isatty():

@@ -29,6 +29,8 @@ class TrialSpec:
     video: str | None = None
     radio_latency: float = 0.1
     radio_loss: float = 0.0
+    image_size: tuple[int, int] = (160, 120)
+    renderer: str = "raster"  # or "tiny": pybullet's, to compare with
 
 
 @dataclass
@@ -57,7 +59,8 @@ def run_trial(spec: TrialSpec, sink: TraceSink | None = None) -> TrialResult:
     scenario, _ = load_scenario(spec.scenario)
     with contextlib.ExitStack() as stack:
         world = SimWorld(World(scenario, spec.seed, radio_latency=spec.radio_latency,
-                                radio_loss=spec.radio_loss, recorder=_recorder(spec.video)))
+                               radio_loss=spec.radio_loss, recorder=_recorder(spec.video),
+                               image_size=spec.image_size, renderer=spec.renderer))
         stack.callback(world.close)
         trace = JsonlTrace(Path(spec.trace)) if spec.trace else sink
         if trace:

@@ -82,6 +82,8 @@ def _message(model: type[BaseModel], path: Path_, err: ErrorDetails) -> str:
     where = f"'{last}'" if isinstance(last, str) else "this value"
     if kind == "extra_forbidden":
         allowed = _allowed_keys(model, err["loc"][:-1])
+        if last in _CALL_ONLY and "parallel-state" in err["loc"]:
+            return f"a parallel state has no {where}: its regions call behaviours (SPEC 11)"
         hint = did_you_mean(str(last), allowed)
         return f"unknown key {where}" + (hint or f" (allowed: {', '.join(allowed)})")
     if kind == "missing":
@@ -110,6 +112,7 @@ def _message(model: type[BaseModel], path: Path_, err: ErrorDetails) -> str:
     return f"{where}: {err['msg']}"
 
 
+_CALL_ONLY = ("do", "with", "save", "retry", "choose")
 _COUNTS = {
     "timer": "a number of seconds > 0",
     "times": "a whole number > 0",

@@ -111,23 +111,34 @@ class Base:
                            jointChildFrameOrientation=orn, maxForce=self._chassis.max_force,
                            physicsClientId=self._cid)
 
+    def _before_advance(self, dt: float) -> None:
+        """Called once at the start of each `World.advance` (the humanoid keeps its leash every step)."""
+
     def _pre_step(self, dt: float) -> None:
         forward, sideways, turn = self._cmd
         if forward == 0.0 and sideways == 0.0 and turn == 0.0:
             return
+        self._target = self._leashed(self._ahead(dt), dt)
+        self._push_target()
+
+    def _ahead(self, dt: float) -> Pose:
+        """The target moved on by the commanded velocity for `dt`."""
+        forward, sideways, turn = self._cmd
         x, y, yaw = self._target
         c, s = math.cos(yaw), math.sin(yaw)
-        x, y, yaw = x + (c * forward - s * sideways) * dt, y + (s * forward + c * sideways) * dt, \
-            yaw + turn * dt
+        return x + (c * forward - s * sideways) * dt, y + (s * forward + c * sideways) * dt, yaw + turn * dt
+
+    def _leashed(self, target: Pose, dt: float) -> Pose:
+        """The target kept near the true pose, so a blocked body does not build up a lead."""
+        forward, sideways, _ = self._cmd
+        x, y, yaw = target
         ax, ay, ayaw = self._true_pose()
         dx, dy = x - ax, y - ay
         dist = math.hypot(dx, dy)
         leash = max(LEASH_XY, 8.0 * math.hypot(forward, sideways) * dt)  # the constraint lags ~5 steps
         if dist > leash:
             x, y = ax + dx * leash / dist, ay + dy * leash / dist
-        yaw = ayaw + clamp(wrap(yaw - ayaw), -LEASH_YAW, LEASH_YAW)
-        self._target = (x, y, yaw)
-        self._push_target()
+        return x, y, ayaw + clamp(wrap(yaw - ayaw), -LEASH_YAW, LEASH_YAW)
 
     def _after_advance(self, bumped: bool, seconds: float = 0.0, read: int = 0) -> None:
         pose = self._true_pose()

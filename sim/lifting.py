@@ -79,6 +79,8 @@ class Lifting:
         self.slip = math.radians(slip_deg)
         self.dropped = False
         self._limp: set[str] = set()  # robots that failed: their hands hold nothing, ever again
+        self._grips = 0  # held by all hands
+        self._rested = False  # the last update found no arm raised and nothing held
 
     def bind(self, arms: Mapping[str, Arms]) -> None:
         self._arms = dict(arms)
@@ -101,8 +103,12 @@ class Lifting:
         hands = self._hands[name]
         return np.array(hands.load), np.array(hands.give)
 
-    def update(self) -> None:
-        """Call after every physics step."""
+    def update(self, arms_raised: bool = True) -> None:
+        """Call after every physics step; `arms_raised` False when no robot's arms are above their
+        lowest height: then, with nothing held, once this has reset every hand there is nothing to do."""
+        if not arms_raised and not self._grips and self._rested:
+            return
+        self._rested = not arms_raised and not self._grips
         table: Pose | None = None
         for name, hands in self._hands.items():
             if not hands.grips and (name in self._limp or not self._arms[name]._arms_active()):
@@ -172,6 +178,7 @@ class Lifting:
                                  physicsClientId=self._cid)
         p.changeConstraint(cid, maxForce=g.hand_max_force, physicsClientId=self._cid)
         hands.grips.append((int(cid), anchor, index))
+        self._grips += 1
 
     def _check_grips(self, name: str, hands: _Hands, points: list[Vec], table: Pose) -> None:
         for grip in list(hands.grips):
@@ -203,4 +210,5 @@ class Lifting:
     def _release(self, hands: _Hands, grip: Grip) -> None:
         p.removeConstraint(grip[0], physicsClientId=self._cid)
         hands.grips.remove(grip)
+        self._grips -= 1
         hands.previous = None

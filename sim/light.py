@@ -1,8 +1,8 @@
-"""Light robots: a camera-less cylinder that drives by velocity commands, for teams of tens (the
-TARARC allocation experiments). No head, no arms, no cameras: it senses its odometry (in the
-room's frame, from the start pose the scenario tells it), its battery and bumps, and hears the
-radio, and it has a proximity sensor (`nearby`), as the paper's Player/Stage robots have lasers,
-to steer around what is near. It collides with walls, tables and other robots like the
+"""Light robots: a camera-less cylinder (drawn as boxes) that drives by velocity commands, for
+teams of tens (the TARARC allocation experiments). No head, no arms, no cameras: it senses its
+odometry (in the room's frame, from the start pose the scenario tells it), its battery and bumps,
+hears the radio, and has a proximity sensor (`nearby`), as the paper's Player/Stage robots have
+lasers, to steer round what is near. It collides with walls, tables and other robots like the
 humanoid does."""
 
 from __future__ import annotations
@@ -42,11 +42,16 @@ def light_motion(speed: float | None) -> MotionProfile:
 def build_light(cid: int, g: LightGeometry, colour: tuple[float, float, float], pose: Pose) -> Chassis:
     col = p.createCollisionShape(p.GEOM_CYLINDER, radius=g.radius, height=g.height,
                                  collisionFramePosition=[0, 0, g.height / 2], physicsClientId=cid)
+    # Seen as boxes (two squares a quarter-turn apart, and a dark nose), as every other body of the
+    # world is: the robots' cameras draw boxes.
+    side, half_h = g.radius * 0.85, g.height / 2
+    turned = p.getQuaternionFromEuler([0.0, 0.0, math.pi / 4])
     vis = p.createVisualShapeArray(
-        [p.GEOM_CYLINDER, p.GEOM_BOX], radii=[g.radius, 0.0], lengths=[g.height, 0.0],
-        halfExtents=[[0, 0, 0], [g.radius * 0.45, 0.02, 0.01]],
-        visualFramePositions=[[0, 0, g.height / 2], [g.radius * 0.5, 0, g.height + 0.01]],
-        rgbaColors=[[*colour, 1.0], [0.1, 0.1, 0.1, 1.0]], physicsClientId=cid)
+        [p.GEOM_BOX] * 3,
+        halfExtents=[[side, side, half_h], [side, side, half_h], [g.radius * 0.45, 0.02, 0.01]],
+        visualFramePositions=[[0, 0, half_h], [0, 0, half_h], [g.radius * 0.5, 0, g.height + 0.01]],
+        visualFrameOrientations=[[0, 0, 0, 1], list(turned), [0, 0, 0, 1]],
+        rgbaColors=[[*colour, 1.0], [*colour, 1.0], [0.1, 0.1, 0.1, 1.0]], physicsClientId=cid)
     x, y, yaw = pose
     orn = p.getQuaternionFromEuler([0.0, 0.0, yaw])
     body = int(p.createMultiBody(g.mass, col, vis, basePosition=[x, y, g.hover], baseOrientation=orn,
@@ -93,6 +98,22 @@ class LightRobot(Base):
                 found.append((nearest[8], nearest[6][0] - x, nearest[6][1] - y))
         c, s = math.cos(yaw), math.sin(yaw)
         return [(c * dx + s * dy, -s * dx + c * dy) for _, dx, dy in sorted(found)]
+
+    # Teams of tens: the leash is kept once per control tick, not every physics step (one pybullet
+    # call a step instead of two), so a blocked light robot may lead its body by a tick's travel.
+    def _before_advance(self, dt: float) -> None:
+        if self._cmd != (0.0, 0.0, 0.0):
+            self._target = self._leashed(self._target, dt)
+            self._push_target()
+
+    def _unwind(self) -> None:
+        """Not on every new command: steered by a new velocity each tick, it would lose its lead each
+        tick and crawl; `_before_advance` keeps the lead within the leash instead."""
+
+    def _pre_step(self, dt: float) -> None:
+        if self._cmd != (0.0, 0.0, 0.0):
+            self._target = self._ahead(dt)
+            self._push_target()
 
 
 def told_pose(x: float, y: float, yaw_degrees: float) -> Pose:

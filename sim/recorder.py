@@ -69,6 +69,8 @@ class Recorder:
                           2 if world.dropped else 1)
         for target in world.scenario.targets:
             cv2.drawMarker(image, px(target.x, target.y), (0, 0, 200), cv2.MARKER_CROSS, 12, 2)
+            cv2.putText(image, target.id, px(target.x + 0.15, target.y - 0.15), cv2.FONT_HERSHEY_SIMPLEX, 0.4,
+                        (0, 0, 200), 1, cv2.LINE_AA)
         for index, name in enumerate(world.robots):
             self._draw_robot(image, world, name, ROBOT_COLOURS[index % len(ROBOT_COLOURS)], px)
         for name in world.robots:

@@ -12,8 +12,9 @@ import pybullet as p
 from sim.base import Base, Chassis, clamp
 from sim.battery import Battery
 from sim.body import ARMS, HEAD, NECK, RobotBody, drive_joint
-from sim.camera import CameraModel, camera_model, camera_spec, render
+from sim.camera import CameraModel, camera_model, camera_spec, world_camera
 from sim.profile import MotionProfile
+from sim.raster import Rasteriser, Renderer
 
 SETTLED_ANGLE, SETTLED_HEIGHT = 0.01, 0.002
 
@@ -73,12 +74,13 @@ class Robot(Base):
                  rng: np.random.Generator, image_size: tuple[int, int],
                  holding: Callable[[], bool],
                  load: Callable[[], tuple[np.ndarray, np.ndarray]],
-                 battery: Battery | None = None) -> None:
+                 battery: Battery | None = None, *, cameras: Renderer | None = None) -> None:
         g = body.geometry
         super().__init__(cid, name, Chassis(body.body, body.mocap, g.hover, g.base_max_force), motion,
                          rng, battery)
         self._body, self._g = body, g
         self._image_size = image_size
+        self._cameras = cameras or Rasteriser(cid)
         self._holding = holding
         self._load = load
         self._head_target = (0.0, 0.0)
@@ -107,9 +109,11 @@ class Robot(Base):
 
     # cameras
     def camera_model(self, camera: str = "forward") -> CameraModel:
-        """Intrinsics and mounting (height, pitch, yaw incl. the head joints) in the body frame."""
+        """Intrinsics, mounting (height, pitch, yaw incl. the head joints) in the body frame, and
+        the body's pose by odometry now."""
         yaw, pitch = self.head()
-        return camera_model(camera_spec(camera), self._g, self._image_size, yaw, pitch)
+        return camera_model(camera_spec(camera), self._g, self._image_size, yaw, pitch,
+                            self.odometry())
 
     def image(self, camera: str = "forward") -> np.ndarray:
         """Render this camera now: H x W x 3 uint8 RGB."""
@@ -118,7 +122,8 @@ class Robot(Base):
 
     def _render(self, camera: str, *, segmentation: bool) -> tuple[np.ndarray, np.ndarray | None]:
         pos, orn = p.getBasePositionAndOrientation(self._body.body, physicsClientId=self._cid)
-        return render(self._cid, self.camera_model(camera), pos, orn, segmentation=segmentation)
+        view = world_camera(self.camera_model(camera), pos, orn)
+        return self._cameras.render(view, segmentation=segmentation)
 
     # arms
     def arms_lower(self) -> None:

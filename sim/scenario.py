@@ -11,7 +11,7 @@ import math
 from collections.abc import Mapping
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 import yaml
@@ -55,12 +55,14 @@ __all__ = [
 ]
 
 DEFAULT_SCENARIO = "opposite_long_side"
+Task = Literal["table_to_wall"]  # what a run is scored on (sim.scorer): the paper's task
 MAX_ROBOTS, MAX_FULL_ROBOTS = 50, 16
 WALL_CLEARANCE = 0.2
 
 
 class Scenario(Strict):
     description: str = ""
+    task: Task | None = Field(None, description="what the run is scored on; absent: nothing")
     room: Room = Room()
     table: TableSpec | None = Field(None, description="one table (shorthand for a one-item `tables:`)")
     tables: list[TableSpec] | None = None

@@ -14,6 +14,7 @@ from sim.body import RobotBody, build_robot
 from sim.lifting import Lifting
 from sim.light import LIGHT_BODY, LightRobot, build_light, light_motion, told_pose
 from sim.profile import ROBOT_COLOURS, BodyGeometry, MotionProfile
+from sim.raster import Renderer
 from sim.robot import Robot
 from sim.scenario import Scenario
 
@@ -55,7 +56,8 @@ class Hands:
 
 
 def make_robots(cid: int, scenario: Scenario, seed: int, bodies: Bodies, liftings: list[Lifting],
-                image_size: tuple[int, int], motion: MotionProfile) -> dict[str, AnyRobot]:
+                image_size: tuple[int, int], motion: MotionProfile, cameras: Renderer | None = None
+                ) -> dict[str, AnyRobot]:
     hands = Hands(liftings)
     robots: dict[str, AnyRobot] = {}
     for i, (name, start) in enumerate(scenario.robots.items()):
@@ -67,7 +69,8 @@ def make_robots(cid: int, scenario: Scenario, seed: int, bodies: Bodies, lifting
                 holding, load = partial(liftings[0].holding, name), partial(liftings[0].load, name)
             else:
                 holding, load = partial(hands.holding, name), partial(hands.load, name)
-            robots[name] = Robot(cid, name, bodies.full[name], own, rng, image_size, holding, load, battery)
+            robots[name] = Robot(cid, name, bodies.full[name], own, rng, image_size, holding, load, battery,
+                                 cameras=cameras)
         else:
             robots[name] = LightRobot(cid, name, bodies.light[name], light_motion(start.speed), rng,
                                       told_pose(start.x, start.y, start.yaw), battery)

@@ -6,9 +6,11 @@ from typing import Any, Protocol
 
 import pybullet as p
 
+from sim.camera import TinyRenderer
 from sim.lifting import Lifting
 from sim.profile import DEFAULT_BODY, DEFAULT_MOTION, BodyGeometry, MotionProfile
 from sim.radio import Radio
+from sim.raster import Rasteriser
 from sim.robot import Robot
 from sim.room import build_room, build_table
 from sim.scenario import Scenario
@@ -31,7 +33,7 @@ class World:
                  image_size: tuple[int, int] = (160, 120), radio_latency: float = 0.1,
                  radio_loss: float = 0.0, success_distance: float = 0.15,
                  recorder: Recorder | None = None, motion: MotionProfile = DEFAULT_MOTION,
-                 body: BodyGeometry = DEFAULT_BODY) -> None:
+                 body: BodyGeometry = DEFAULT_BODY, renderer: str = "raster") -> None:
         self.scenario, self.seed, self.physics_hz = scenario, seed, physics_hz
         self.image_size = image_size
         self._cid: int | None = p.connect(p.DIRECT)
@@ -44,8 +46,10 @@ class World:
             tables = [build_table(cid, spec) for spec in scenario.all_tables]
             bodies = Bodies(cid, scenario, seed, body, motion)
             self._liftings = [Lifting(cid, table, bodies.full, dt=1.0 / physics_hz) for table in tables]
+            # one renderer for every robot's cameras; "tiny" (pybullet's) only to compare with
+            cameras = TinyRenderer(cid) if renderer == "tiny" else Rasteriser(cid)
             self.robots: dict[str, AnyRobot] = make_robots(cid, scenario, seed, bodies, self._liftings,
-                                                           image_size, motion)
+                                                           image_size, motion, cameras)
             arms = {name: r for name, r in self.robots.items() if isinstance(r, Robot)}
             for lifting in self._liftings:
                 lifting.bind(arms)
@@ -84,13 +88,16 @@ class World:
         end = round((self.time + seconds) * self.physics_hz)
         start = self._steps
         robots = list(self.robots.values())
+        raised = any(r._arms_active() for r in robots if isinstance(r, Robot))  # commands hold over the span
+        for robot in robots:
+            robot._before_advance(dt)
         while self._steps < end:
             for robot in robots:
                 robot._pre_step(dt)
             p.stepSimulation(physicsClientId=cid)
             self._steps += 1
             for lifting in self._liftings:
-                lifting.update()
+                lifting.update(raised)
             self._scorer.observe()
             self._capture()
         bumps, reads = self._scorer.take_bumps(), self.radio.take_reads()
@@ -126,7 +133,10 @@ class World:
             x, y, lift, yaw = truth.table_pose(i)
             tables.append([round(x, 4), round(y, 4), round(yaw, 4), body.spec.length, body.spec.width,
                            round(lift, 4)])
-        return {"room": [room.width, room.depth], "robots": robots, "tables": tables}
+        poses: dict[str, Any] = {"room": [room.width, room.depth], "robots": robots, "tables": tables}
+        if self.scenario.targets:  # [id, x, y]: where the team is sent (the paper's rooms have none)
+            poses["targets"] = [[t.id, t.x, t.y] for t in self.scenario.targets]
+        return poses
 
     def score(self) -> dict[str, Any]:
         """Ground-truth outcome; see sim.scorer.Scorer.score for the keys."""

@@ -51,8 +51,9 @@ def draw(rng: random.Random, move_table: bool, clearance: float) -> dict[str, An
         apart = all(math.dist((x, y), (r["x"], r["y"])) >= clearance for r in robots.values())
         if apart and _clear_of_table(x, y, table, clearance):
             robots[f"r{len(robots) + 1}"] = {"x": x, "y": y, "yaw": round(rng.uniform(-180, 180), 1)}
-    return {"description": "a random held-out start", "room": {"width": ROOM, "depth": ROOM},
-            "table": table, "robots": robots, "jitter": {"position": 0.0, "yaw": 0.0}}
+    return {"description": "a random held-out start", "task": "table_to_wall",
+            "room": {"width": ROOM, "depth": ROOM}, "table": table, "robots": robots,
+            "jitter": {"position": 0.0, "yaw": 0.0}}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -1,46 +1,26 @@
-"""Small step sideways (Figure 3): a few crab steps with the table held, stopping as soon as
-the arms feel the table resist (a corner against a wall), before the grip gives."""
+"""Small step sideways (Figure 3): a few crab steps with the table held.
+
+The robot feels the table stop following (a corner against a wall) on its arms, like an insect:
+`machines/step_together.yaml` watches each hand's give (`in.hand_give_left`, `in.hand_give_right`)
+and whether the hands still hold (`in.holding`) while this primitive walks, and stops it."""
 
 from __future__ import annotations
 
 from behaviours.body import Body
 from behaviours.carry.sensing import side_sign
-from hfsm.primitive import Context, Outcome, primitive
+from hfsm.primitive import Context, primitive
 
 
-@primitive(outcomes=["stepped", "blocked", "dropped"], failures=["dropped"], outputs=["give"],
-           world="sim")
+@primitive(outcomes=["stepped"], world="sim")
 def small_step_sideways(
-    ctx: Context,
-    *,
-    direction: str,
-    steps: int = 10,
-    step: float = 0.05,
-    pause: float = 0.2,
-    max_give: float = 0.02,
-) -> str | Outcome:
+    ctx: Context, *, direction: str, steps: int = 10, step: float = 0.05, pause: float = 0.2
+) -> str:
     """Take `steps` sideways steps of `step` m toward `direction` ('left' or 'right', in the
     robot's own frame), pausing `pause` s after each. The two robots start together (the lift
-    handshake) and take the same steps, so they keep the table between them.
-
-    Like an insect, the robot feels the load on its arms (`hand_load`): while it walks, a hand
-    pulled back against the walk by more than `max_give` m means the table does not follow (a
-    corner against a wall); stop at once, `blocked` (the grip is lost at 5 cm). `give` is the
-    largest such pull felt (m). `dropped` as soon as the hands no longer carry the table."""
+    handshake) and take the same steps, so they keep the table between them."""
     body = Body(ctx)
     sign = side_sign(direction)
-    felt = 0.0
-
-    def resisted() -> bool:
-        nonlocal felt
-        load = ctx.robot.hand_load()
-        felt = max(felt, -sign * float(load.left[1]), -sign * float(load.right[1]))
-        return felt > max_give
-
     for _ in range(steps):
-        if not ctx.robot.holding():
-            return "dropped"
-        if body.crab_until(sign * step, resisted):
-            return Outcome("blocked", give=round(felt, 3))
+        body.crab(sign * step)
         ctx.wait(pause)
-    return Outcome("stepped", give=round(felt, 3)) if ctx.robot.holding() else "dropped"
+    return "stepped"

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 from hfsm.expr import ExprValueError
 from hfsm.runtime.agent import Event, Frame, Region
 from hfsm.runtime.calls import Calls
@@ -40,49 +38,49 @@ class Arcs(Calls):
             frame, ended = caller, after
 
     def _run(self, frame: Frame, event: Event) -> Event | None:
+        """Take arcs in `frame` until its state waits (None) or its machine ends (that ending)."""
         while True:
-            target = self._arc(frame, event)
+            state = frame.state
+            name = event.name
+            target: RState | str | None
+            if event.goto is None and event.message is None and name != "error":
+                target = state.arcs.get(name)
+                if target is None:
+                    error = f"'{state.do}' ended with '{name}', which is not one of its outcomes"
+                    event = Event("error", error=error)
+                    continue
+                if state.save and event.outputs:
+                    self._save(frame, state.save, event.outputs)
+            else:
+                target = self._other_target(frame, state, event)
+            if self.records is not None:
+                self.records.arc(frame, state, event, target)
+            do = state.do
+            if do:  # _leave's statistics, without its call
+                stats = frame.agent.stats.get(do) or frame.agent.new_stats(do)
+                stats.calls += 1
+                stats.ticks += self.tick - frame.entered
+                stats.events[name] = stats.events.get(name, 0) + 1
             if target is None:
                 return event  # an unmapped error ends the machine and passes to its caller
             if target.__class__ is str:
-                return self._finish(frame, target)
+                ending = frame.machine.endings.get(target)  # _finish's work for a machine without outputs
+                return ending if ending is not None else self._finish(frame, target)
             entered = self._enter(frame, target)  # type: ignore[arg-type]
             if entered is None:
                 return None
             event = entered
 
-    def _arc(self, frame: Frame, event: Event) -> RState | str | None:
-        state = frame.state
-        name = event.name
-        target: RState | str | None
+    def _other_target(self, frame: Frame, state: RState, event: Event) -> RState | str | None:
+        """The target of a choice's branch or a watch (goto), an error, or a message."""
         if event.goto is not None:
-            target = event.goto
-        elif name == "error":
-            if not event.origin:
-                event.origin = "/".join(frame.path())
-                self.emit(frame.agent, frame.path(), "error", message=event.error)
-            target = state.error_target
-        elif event.message is not None:
-            target = state.msg_arcs[name]
-        else:
-            found = state.arcs.get(name)
-            if found is None:
-                error = f"'{state.do}' ended with '{name}', which is not one of its outcomes"
-                return self._arc(frame, Event("error", error=error))
-            target = found
-            if state.save and event.outputs:
-                for var, output in state.save:
-                    if output in event.outputs:
-                        frame.vars[var] = event.outputs[output]
-                        frame.vars_shown = False
-        if self.trace is not None:
-            shown = target.name if target.__class__ is RState else target
-            extra = self._vars_of(frame)
-            if state.do == "barrier" and event.outputs:
-                extra["arrived"] = event.outputs.get("arrived")  # who the barrier heard (the monitor)
-            self.emit(frame.agent, frame.path(), "event", event=name, target=shown, **extra)
-        self._leave(frame, name)
-        return target
+            return event.goto
+        if event.message is not None and event.name != "error":
+            return state.msg_arcs[event.name]
+        if not event.origin:
+            event.origin = "/".join(frame.path())
+            self.emit(frame.agent, frame.path(), "error", message=event.error)
+        return state.error_target
 
     def _enter(self, frame: Frame, state: RState) -> Event | None:
         agent = frame.agent
@@ -91,8 +89,8 @@ class Arcs(Calls):
         frame.state_deadline = None
         frame.attempt = 1
         bad_timer = None if state.timer is None else self._start_timer(frame, state)
-        if self.trace is not None:
-            self.emit(agent, frame.path(), "enter", **self._entered(frame, state))
+        if self.records is not None:
+            self.records.enter(frame, state)
         agent.entries += 1
         if agent.entries > MAX_ENTRIES:
             path = "/".join(frame.path())
@@ -127,24 +125,6 @@ class Arcs(Calls):
         frame.state_deadline = self.tick + ticks  # type: ignore[operator]
         return None
 
-    def _entered(self, frame: Frame, state: RState) -> dict[str, Any]:
-        """What an `enter` record tells beside its path: the callee, when the state's and the
-        machine's timers fire (seconds), and the machine's vars when the trace has not shown them."""
-        extra: dict[str, Any] = {"do": state.do} if state.do else {}
-        if frame.state_deadline is not None:
-            extra["deadline"] = round(frame.state_deadline * self.dt, 9)
-        if frame.deadline is not None:
-            extra["machine_deadline"] = round(frame.deadline * self.dt, 9)
-        extra.update(self._vars_of(frame))
-        return extra
-
-    def _vars_of(self, frame: Frame) -> dict[str, Any]:
-        """`{"vars": {...}}` once after the machine's vars change (a trace shows values on change)."""
-        if frame.vars_shown:
-            return {}
-        frame.vars_shown = True
-        return {"vars": dict(frame.vars)}
-
     def _choose(self, frame: Frame, state: RState) -> Event:
         for condition, text, target in state.branches:
             if condition is None:
@@ -157,12 +137,15 @@ class Arcs(Calls):
         raise AssertionError("a checked choice ends with else")
 
     def _watch(self, frame: Frame, state: RState) -> Event | None:
-        """The first watch that holds, as the event that takes its arc (None: none holds, or it stays)."""
+        """The first watch that holds, as the event that takes its arc (None: none holds).
+
+        A watch back to this state is passed over (SPEC 12): the state stays, and the watches after
+        it are tried, so a machine's watch into a state does not silence that state's own."""
         for watch in state.watches:
             try:
                 holds = watch.condition(frame.scope)
             except ExprValueError as exc:
                 return Event("error", error=f"watch '{watch.text}': {exc}")
-            if holds:  # the first that holds decides; one back to this state stays (XABSL's `stay`)
-                return None if watch.target is state else Event(watch.text, goto=watch.target)
+            if holds and watch.target is not state:
+                return Event(watch.text, goto=watch.target)
         return None

@@ -6,7 +6,7 @@ from typing import Any
 
 from hfsm.expr import ExprValueError
 from hfsm.runtime.agent import Event, Frame, Region
-from hfsm.runtime.builtins import STARTERS
+from hfsm.runtime.builtins import STARTERS, Wait
 from hfsm.runtime.cancel import Cancelling
 from hfsm.runtime.primitives import PrimitiveActivity, RunContext
 from hfsm.runtime.program import RMachine, resolve_params, timer_ticks
@@ -44,6 +44,9 @@ class Calls(Cancelling):
 
         `with` reads `frame`. Returns what it ended with at once, or None while it runs.
         """
+        if callee.wait_ticks:  # start_wait's work, without its calls
+            where.below = Wait(self.tick + callee.wait_ticks)
+            return None
         params = callee.params if callee.params is not None else self._params(callee, frame)
         if params.__class__ is Event:
             return params
@@ -111,14 +114,13 @@ class Calls(Cancelling):
             if frame.attempt > times:  # type: ignore[operator]
                 return event
             self._ended_once(frame, event)
-            frame.attempt += 1
             if self.trace is not None:
                 self.emit(
                     frame.agent,
                     frame.path(),
                     "event",
                     event="retry",
-                    attempt=frame.attempt,
+                    attempt=frame.attempt + 1,
                     outcome=event.name,
                 )
             delay = self._delay(state.retry_delay, frame)
@@ -127,11 +129,18 @@ class Calls(Cancelling):
             if delay:
                 frame.retry_at = self.tick + delay  # type: ignore[operator]
                 return None
+            self._next_attempt(frame)
             ended = self._start_call(frame, state, frame)
             if ended is None:
                 return None
             event = ended
         return event
+
+    def _next_attempt(self, frame: Frame) -> None:
+        """`state.attempt` grows as the behaviour is called again (SPEC 13), not during the delay."""
+        frame.attempt += 1
+        if frame.state.watches:
+            self.wake = True  # the watches read it next in the following tick: not to be skipped
 
     def _ended_once(self, frame: Frame, event: Event) -> None:
         """An attempt that will be retried: its error written down, or its outputs saved."""
@@ -141,10 +150,9 @@ class Calls(Cancelling):
                 self.emit(frame.agent, frame.path(), "error", message=event.error)
             return
         if frame.state.save and event.outputs:
-            for var, output in frame.state.save:
-                if output in event.outputs:
-                    frame.vars[var] = event.outputs[output]
-                    frame.vars_shown = False
+            self._save(frame, frame.state.save, event.outputs)
+            if frame.state.watches:
+                self.wake = True  # a watch may read what the attempt saved
 
     def _count_of(self, times: Any, frame: Frame, what: str) -> int | Event:
         if times.__class__ is int:

@@ -12,6 +12,7 @@ from typing import Any
 from hfsm.runtime.agent import Agent, AgentResult, Event, Frame, Region
 from hfsm.runtime.barrier import Team
 from hfsm.runtime.program import span_ticks
+from hfsm.runtime.records import records_for
 from hfsm.runtime.states import RState
 from hfsm.trace import TraceSink
 from hfsm.world import World
@@ -34,14 +35,16 @@ class Core:
         for agent in agents:
             agent.clock = self
         self.by_name = {a.name: a for a in agents}
-        self.world = world
+        self.world: World = world
         self.dt = dt
         self.trace = trace
+        self.records = records_for(trace, self)
         self.tick = 0
         self._time = (0, 0.0)  # (tick, seconds) of the last time asked for
         self.running = len(agents)  # agents whose top machine has not ended
         self.spans: dict[float, int] = {}  # seconds -> ticks, for spans seen before
         self.team = Team(self)  # barriers (SPEC 14)
+        self.wake = False  # vars changed after a state's watches were tried: its next tick is due
 
     @property
     def time(self) -> float:
@@ -59,24 +62,28 @@ class Core:
         return ticks
 
     def emit(self, agent: Agent, path: list[str], kind: str, **extra: Any) -> None:
-        if self.trace is not None:
-            self.trace.write({"t": self.time, "agent": agent.name, "path": path, "kind": kind, **extra})
+        if self.records is not None:
+            self.records.write(agent, path, kind, **extra)
 
     def _leave(self, frame: Frame, event: str) -> None:
         """The trace's `exit` of a frame's current state, and the statistics of its behaviour."""
         if self.trace is not None:
             self.emit(frame.agent, frame.path(), "exit", event=event)
-        do = frame.state.do
-        if do:
-            stats = frame.agent.stats.get(do) or frame.agent.new_stats(do)
-            stats.calls += 1
-            stats.ticks += self.tick - frame.entered
-            stats.events[event] = stats.events.get(event, 0) + 1
+        if frame.state.do:
+            self._count(frame.agent, frame.state.do, frame.entered, event)
 
     def _region_left(self, region: Region, event: str) -> None:
         if self.trace is not None:
             self.emit(region.owner.agent, region.path(), "exit", event=event)
         self._count(region.owner.agent, region.spec.do, region.owner.entered, event)
+
+    @staticmethod
+    def _save(frame: Frame, save: tuple[tuple[str, str], ...], outputs: dict[str, Any]) -> None:
+        """A state's `save`: the callee's outputs it names, into the machine's vars."""
+        for var, output in save:
+            if output in outputs:
+                frame.vars[var] = outputs[output]
+                frame.vars_shown = False
 
     def _count(self, agent: Agent, behaviour: str, entered: int, event: str) -> None:
         stats = agent.stats.get(behaviour) or agent.new_stats(behaviour)
@@ -98,7 +105,6 @@ class Core:
     # --- defined by the layers above -----------------------------------------------------------
 
     def _run(self, frame: Frame, event: Event) -> Event | None:
-        """Take arcs in `frame` until its state waits (None) or its machine ends (that ending)."""
         raise NotImplementedError
 
     def _enter(self, frame: Frame, state: RState) -> Event | None:

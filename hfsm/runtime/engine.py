@@ -84,6 +84,7 @@ class Engine(Parallel):
                 return True
         if frame.retry_at == k:
             frame.retry_at = None
+            self._next_attempt(frame)
             self._after_call(frame, self._start_call(frame, state, frame))
             return True
         return False

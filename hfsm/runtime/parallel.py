@@ -51,16 +51,14 @@ class Parallel(Arcs):
     def _region_ended(self, region: Region, event: Event) -> None:
         region.below = None
         region.result = event
+        if region.owner.state.watches:
+            self.wake = True  # a watch may read what the region saved or set
         if event.name == "error":
             if not event.origin:
                 event.origin = "/".join(region.path())
                 self.emit(region.owner.agent, region.path(), "error", message=event.error)
         elif region.spec.save and event.outputs:
-            owner_vars = region.owner.vars
-            for var, output in region.spec.save:
-                if output in event.outputs:
-                    owner_vars[var] = event.outputs[output]
-                    region.owner.vars_shown = False
+            self._save(region.owner, region.spec.save, event.outputs)
         self._region_left(region, event.name)
 
     def _region_failed(self, frame: Frame, event: Event) -> Event:

@@ -15,7 +15,7 @@ from hfsm.model import Watch as WatchModel
 from hfsm.registry import Registry
 from hfsm.runtime.states import Callee, RMachine, RRegion, RState, Watch
 from hfsm.runtime.states import JoinRule as RJoin
-from hfsm.spec import BehaviourSpec, coerce, type_ok
+from hfsm.spec import BehaviourSpec, coerce, is_finite_number, type_ok
 from hfsm.values import compile_value
 
 __all__ = ["Program", "RMachine", "RState", "machine_params", "resolve_params", "span_ticks", "timer_ticks"]
@@ -124,6 +124,9 @@ class Program:
         if all(v.constant for v in callee.with_.values()):
             params = resolve_params(callee.spec, {k: v.literal for k, v in callee.with_.items()})
             callee.params = params if isinstance(params, dict) else None
+            seconds: Any = callee.params.get("seconds") if callee.params and callee.kind == "wait" else None
+            if is_finite_number(seconds) and seconds > 0:
+                callee.wait_ticks = max(0, span_ticks(seconds, self.dt))
 
     @staticmethod
     def _arcs(

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import sys
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -36,6 +36,7 @@ class RunOptions:
     seed: int = 0
     max_time: float = 3600.0
     failures: Sequence[Failure] = ()
+    agent_params: Mapping[str, dict[str, Any]] = field(default_factory=dict)  # an agent's own params
 
 
 def run(program: Program, world: World, options: RunOptions, trace: TraceSink | None = None) -> RunResult:
@@ -64,21 +65,20 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
         for agent in agents:
             if agent.result is None:
                 agent.entries = 0
-                engine.start(agent, top, options.params)
+                engine.start(agent, top, options.agent_params.get(agent.name, options.params))
         while engine.running:
             following = _next_tick(engine, failures) if world.static else engine.tick + 1
-            if following is None:
-                return "blocked forever: " + _where(agents), ""
-            if following > last:
-                engine.tick = max(engine.tick, last)
-                return f"stopped at --max-time {options.max_time:g} s: " + _where(agents), ""
+            if following is None or following > last:
+                return _stopped(engine, following, last, options.max_time), ""
             if not world.static:
                 world.advance(engine.tick)
                 _world_records(engine, world_records, following)
             engine.tick = following
             if failures.due or not world.static:
                 failures.apply(following)
-            engine.deliver(world.collect(following))
+            arrived = world.collect(following)
+            if arrived:
+                engine.deliver(arrived)
             for agent in agents:
                 if agent.result is None:
                     agent.entries = 0
@@ -88,6 +88,14 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
     except FatalError as exc:
         return exc.args[0], exc.traceback
     return None, ""
+
+
+def _stopped(engine: Engine, following: int | None, last: int, max_time: float) -> str:
+    """Why a run stops before every agent ended: nothing can happen any more, or --max-time."""
+    if following is None:
+        return "blocked forever: " + _where(engine.agents)
+    engine.tick = max(engine.tick, last)
+    return f"stopped at --max-time {max_time:g} s: " + _where(engine.agents)
 
 
 WorldRecords = Callable[[int], list[dict[str, Any]]]
@@ -102,7 +110,8 @@ def _world_records(engine: Engine, records: WorldRecords | None, tick: int) -> N
 def _next_tick(engine: Engine, failures: Failures) -> int | None:
     """In a static world, the next tick in which anything can happen; None when nothing can."""
     now = engine.tick
-    if engine.team.waiting and engine.team.live():
+    if engine.wake or (engine.team.waiting and engine.team.live()):
+        engine.wake = False
         return now + 1
     best = engine.world.next_delivery() or sys.maxsize
     for agent in engine.agents:

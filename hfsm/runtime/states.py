@@ -14,7 +14,7 @@ from hfsm.values import Value
 class Callee:
     """What a call state or a region calls: its behaviour, how to find it, its `with` and `save`."""
 
-    __slots__ = ("callee", "do", "kind", "params", "save", "spec", "with_")
+    __slots__ = ("callee", "do", "kind", "params", "save", "spec", "wait_ticks", "with_")
 
     def __init__(self) -> None:
         self.do = ""
@@ -24,6 +24,7 @@ class Callee:
         self.with_: dict[str, Value] = {}
         self.params: dict[str, Any] | None = None  # the callee's params, when `with` holds no expression
         self.save: tuple[tuple[str, str], ...] = ()
+        self.wait_ticks = 0  # > 0: a `wait` of constant seconds, that many ticks (started without a call)
 
 
 class RRegion(Callee):

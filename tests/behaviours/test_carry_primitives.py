@@ -62,7 +62,8 @@ def test_lift_step_land_carries_the_table_level(tmp_path: Path) -> None:
           step:
             do: small_step_sideways
             with: {direction: "${'left' if agent.id == 'r1' else 'right'}", steps: 3}
-            on: {stepped: land, blocked: failure, dropped: failure}
+            watch: [{if: "not in.holding", then: failure}]
+            on: {stepped: land}
           land: {do: land_table, on: {landed: done, failure: failure}}
     """)
     run = run_in_scene(top, at_table())
@@ -117,9 +118,10 @@ def test_table_at_wall(tmp_path: Path, table_x: float, outcome: str, steps: int)
     assert run.outputs()["steps"] == pytest.approx(steps, abs=1)
 
 
-def test_small_step_sideways_stops_when_the_table_is_stuck(tmp_path: Path) -> None:
+def test_a_watch_on_the_hands_stops_the_step_when_the_table_is_stuck(tmp_path: Path) -> None:
     """A table turned 30 degrees meets the wall with a corner: both carriers feel it on their
-    hands, stop (`blocked`) and land it, instead of walking on until the grip gives."""
+    hands (a give of more than 2 cm, whatever its direction: step_together's watch), stop and
+    land it, instead of walking on until the grip gives."""
     yaw, table_x = math.radians(30.0), 1.2
     nx, ny = -math.sin(yaw), math.cos(yaw)
     scenario = {"room": {"width": 4.0, "depth": 4.0}, "table": {"x": table_x, "yaw": 30.0},
@@ -136,8 +138,14 @@ def test_small_step_sideways_stops_when_the_table_is_stuck(tmp_path: Path) -> No
           step:
             do: small_step_sideways
             with: {direction: "${'right' if agent.id == 'r1' else 'left'}", steps: 12}
-            save: {give: give}
-            on: {stepped: land_stepped, blocked: land_blocked, dropped: failure}
+            watch:
+              - {if: "not in.holding", then: failure}
+              - {if: "max(in.hand_give_left, in.hand_give_right) > 0.02", then: felt}
+            on: {stepped: land_stepped}
+          felt:
+            do: set
+            with: {give: "${max(in.hand_give_left, in.hand_give_right)}"}
+            on: {done: land_blocked}
           land_stepped: {do: land_table, on: {landed: stepped, failure: failure}}
           land_blocked: {do: land_table, on: {landed: blocked, failure: failure}}
     """)

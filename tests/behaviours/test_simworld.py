@@ -79,3 +79,19 @@ def test_simulated_time_keeps_up_with_any_dt(
 def test_an_unwritable_output_folder_is_exit_2(machine: Machine, capsys: pytest.CaptureFixture[str]) -> None:
     code, _, err = run(capsys, machine("talk", TALK), "--world", "sim", "--out", "/proc/nowhere")
     assert code == 2 and "cannot write in /proc/nowhere" in err
+
+
+def test_the_score_is_the_scenario_task_s_and_about_robots_only_without_a_task(
+    machine: Machine, capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    path = machine("talk", TALK)
+    code, out, _ = run(capsys, path, "--world", "sim", "--no-video", "--out", tmp_path)
+    assert code == 0 and "task: table_to_wall\nscore: success " in out
+    bare = tmp_path / "bare.yaml"
+    bare.write_text("robots:\n  r1: {x: -1.0, y: 0.5}\n  r2: {x: 1.0, y: -0.5}\n")
+    code, out, _ = run(capsys, path, "--world", "sim", "--scenario", bare, "--no-video", "--out", tmp_path)
+    assert code == 0 and "r2: ended in 'done'" in out and "score: robot_collisions 0, time " in out
+    assert "task" not in out and "table" not in out and "success" not in out and "dropped" not in out
+    code, out, _ = run(capsys, path, "--world", "sim", "--scenario", bare, "--json", "--no-video", "--out", tmp_path)
+    assert code == 0 and set(json.loads(out)) == {"agents", "score"}
+    assert set(json.loads(out)["score"]) == {"robot_collisions", "time"}

@@ -86,3 +86,19 @@ def test_resolve_names_and_paths(tmp_path: Path) -> None:
         resolve("no_such_scenario")
     with pytest.raises(FileNotFoundError):
         resolve(tmp_path / "missing.yaml")
+
+
+def test_the_paper_scenarios_define_the_table_task_and_a_bare_one_none() -> None:
+    assert {load_scenario(name).task for name in FIGURE_10} == {"table_to_wall"}
+    assert scenario_from_dict(yaml.safe_load(BRIEF_EXAMPLE)).task is None
+
+
+def test_an_unknown_task_is_rejected() -> None:
+    with pytest.raises(ValidationError, match="table_to_wall"):
+        scenario_from_dict({**yaml.safe_load(BRIEF_EXAMPLE), "task": "tables_to_wall"})
+
+
+def test_the_reference_s_scenario_example_loads() -> None:
+    page = (Path(__file__).resolve().parents[2] / "docs" / "REFERENCE.md").read_text()
+    text = page.split("# file: two_in_a_room.yaml\n", 1)[1].split("```", 1)[0]
+    assert scenario_from_dict(yaml.safe_load(text)).task == "table_to_wall"

@@ -8,9 +8,11 @@ from pathlib import Path
 from typing import Any
 
 import yaml
-from helpers import execute
+from helpers import check_nesting, execute
 from hypothesis import given
 from hypothesis import strategies as st
+
+from hfsm.trace import JsonlTrace, TraceSink, encode
 
 OUTCOMES = ["done", "failure"]
 KINDS = ["wait", "wait_forever", "set", "log", "send", "wait_for", "choice", "child", "parallel", "retry"]
@@ -131,26 +133,12 @@ CHILD = {
 }
 
 
-def _run(tmp_path: Path, machine: dict[str, Any], max_time: float) -> tuple[Any, list[dict[str, Any]]]:
+def _run(
+    tmp_path: Path, machine: dict[str, Any], max_time: float, sink: TraceSink | None = None
+) -> tuple[Any, list[dict[str, Any]]]:
     (tmp_path / "child.yaml").write_text(yaml.safe_dump(CHILD))
     (tmp_path / "top.yaml").write_text(yaml.safe_dump(machine, sort_keys=False))
-    return execute(tmp_path / "top.yaml", agents=["a", "b"], max_time=max_time)
-
-
-def _check_nesting(records: list[dict[str, Any]]) -> None:
-    """Every enter has its exit; a path enters inside an open one and exits after all below it."""
-    open_paths: dict[str, set[tuple[str, ...]]] = {}
-    for record in records:
-        opened = open_paths.setdefault(record["agent"], set())
-        path = tuple(record["path"])
-        if record["kind"] == "enter":
-            assert path not in opened and (len(path) == 1 or path[:-1] in opened), (opened, record)
-            opened.add(path)
-        elif record["kind"] == "exit":
-            assert path in opened, (opened, record)
-            assert not any(p[: len(path)] == path and p != path for p in opened), (opened, record)
-            opened.remove(path)
-    assert all(not s for s in open_paths.values()), open_paths
+    return execute(tmp_path / "top.yaml", agents=["a", "b"], max_time=max_time, sink=sink)
 
 
 @given(machines())
@@ -160,7 +148,18 @@ def test_never_crashes_and_every_enter_has_its_exit(
     machine, _ = drawn
     result, records = _run(tmp_path_factory.mktemp("m"), machine, max_time=5)
     assert set(result.agents) == {"a", "b"}
-    _check_nesting(records)
+    check_nesting(records)
+
+
+@given(machines())
+def test_the_jsonl_trace_is_the_records_encoded_one_by_one(
+    tmp_path_factory: Any, drawn: tuple[dict[str, Any], Any]
+) -> None:
+    """The JSONL sink gets the hot records as text (hfsm.runtime.records): the same bytes."""
+    folder = tmp_path_factory.mktemp("m")
+    _, records = _run(folder, drawn[0], max_time=5)
+    _run(folder, drawn[0], max_time=5, sink=JsonlTrace(folder / "t.jsonl"))
+    assert (folder / "t.jsonl").read_text(encoding="utf-8") == "".join(encode(r) + "\n" for r in records)
 
 
 @given(machines().filter(lambda drawn: drawn[1] is not None))
@@ -189,4 +188,4 @@ def test_a_complete_join_never_hangs(tmp_path_factory: Any, machine: dict[str, A
     result, records = _run(tmp_path_factory.mktemp("m"), machine, max_time=10)
     assert result.error is None, result.error
     assert all(r.outcome in OUTCOMES for r in result.agents.values())
-    _check_nesting(records)
+    check_nesting(records)
