@@ -14,7 +14,7 @@ from sim.scenario import scenario_from_dict  # noqa: E402
 from tools.sweep import run_sweep  # noqa: E402
 from tools.tararc.experiments import Config, help_trials, main_trials  # noqa: E402
 from tools.tararc.measure import Timeline, measure  # noqa: E402
-from tools.tararc.report import growth, median  # noqa: E402
+from tools.tararc.report import growth, median, write  # noqa: E402
 from tools.tararc.scenes import scene  # noqa: E402
 from tools.tararc.trials import BenchTrial, run_bench_trial  # noqa: E402
 
@@ -83,3 +83,24 @@ def test_results_are_the_same_on_one_and_two_workers() -> None:
     assert [{k: v for k, v in r.items() if k != "wall"} for r in one] == [
         {k: v for k, v in r.items() if k != "wall"} for r in two]
     assert all(r["collisions"] == 0 for r in one)
+
+
+def test_the_report_from_results(tmp_path: Path) -> None:
+    def run(exp: str, x: Any, done: bool = True, **more: Any) -> dict[str, Any]:
+        return {"experiment": exp, "x": x, "seed": 1, "completed": done, "grouped": 10.0 * (1 + (x == 20)),
+                "enclosed": 40.0 if done else math.inf, "converge": 30.0 if done else math.inf,
+                "collisions": 0, "groups": [{"B": 3.0, "difficulty": 0.3}], **more}
+
+    results = [run("table1", [1, 2, 3]), run("table1", [3, 2, 1], done=False), run("density", 1.0),
+               run("size", 10), run("size", 20), run("speed", 0.5),
+               {"experiment": "ability", "x": 0, "seed": 1, "runs": [run("ability", 0), run("ability", 0)]},
+               run("help", "r1", agents=["r1"], recovery=5.0), run("help", "r2", agents=["r1"], recovery=6.0)]
+    doc = tmp_path / "TARARC.md"
+    lines = write(results, doc, tmp_path / "figures", "tools/tararc_bench.py", 90.0, len(results))
+    text = doc.read_text(encoding="utf-8")
+    assert "| (3, 2, 1) | ∞ | ∞ | 0/1 | 0 |" in text and "| (1, 2, 3) | 33.0 | 30.0 | 1/1 | 0 |" in text
+    assert "- Priority orders that never finish: 1 of 2 (paper: 1 of 6): [3, 2, 1]." in lines
+    assert "(2.0 times as many) the time to group goes from 10.0 s to 20.0 s (2.00 times)" in text
+    assert "| agent | 1 | 1/1 | 5.0 |" in text and "| member | 1 | 1/1 | 6.0 |" in text
+    assert sorted(p.name for p in (tmp_path / "figures").iterdir()) == [
+        "fig5_density.png", "fig6_size.png", "fig7_speed.png", "fig8_ability.png"]

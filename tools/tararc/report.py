@@ -108,11 +108,30 @@ def help_table(results: Results) -> list[str]:
     return lines
 
 
+def beaten(results: Results) -> list[str]:
+    """Issue 9's point 5, each claim with the bench's own count."""
+    orders = by_x(results, "table1")
+    never = [o for o, rs in orders.items() if not any(r["completed"] for r in rs)]
+    _, sizes, _ = curve(results, "size", "grouped", "robots")
+    helped = [r for r in results if r["experiment"] == "help"]
+    runs = [run for r in results for run in r.get("runs", [r])]
+    hits = sum(run["collisions"] for run in runs)
+    return [
+        f"- Priority orders that never finish: {len(never)} of {len(orders)} (paper: 1 of 6)"
+        + (f": {', '.join(never)}" if never else "") + ".",
+        f"- Time to group against the team: {growth(sizes) or 'not measured'}",
+        f"- A single robot failing mid-move: the tasks completed in {sum(r['completed'] for r in helped)} "
+        f"of {len(helped)} runs.",
+        f"- Robot-robot collisions over all {len(runs)} runs of the bench: {hits}.",
+    ]
+
+
 def write(results: Results, doc: Path, figures: Path, command: str, wall: float, trials: int) -> list[str]:
     """Write the figures and the `tararc_bench` section of `doc`; returns the section's lines."""
     rel = figures.relative_to(doc.parent)
     lines = [f"Command: `{command}` ({trials} trials, {wall / 60:.1f} min wall). Times are simulated "
              "seconds; medians over the trials that completed; ∞: none did.", "",
+             "### Against the paper (issue 9, point 5)", "", *beaten(results), "",
              "### Table 1: priority orders (10 robots, 3 targets)", "", *table1(results), ""]
     for exp, key, label, xlabel, fig, title in (
         ("density", "converge", "density", "relative density of robots (area ratio)", "fig5_density.png",
