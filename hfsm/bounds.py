@@ -14,6 +14,7 @@ from typing import Any
 class LimitError(Exception):
     """A value past a limit; expressions turn it into ExprValueError (the event `error`)."""
 
+
 MAX_TEXT = 100_000  # characters of a string
 MAX_ITEMS = 100_000  # elements of a list or dict, counted through nesting (a shared one each time)
 MAX_DEPTH = 100  # lists and dicts nested

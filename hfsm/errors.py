@@ -44,4 +44,3 @@ class UserError(HfsmError):
 
 class UsageError(HfsmError):
     """A bad command-line argument, not tied to a file position; exit 2."""
-

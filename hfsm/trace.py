@@ -4,9 +4,21 @@ from __future__ import annotations
 
 import json
 import time
+from collections.abc import Callable
 from json.encoder import c_make_encoder, encode_basestring  # type: ignore[attr-defined]
 from pathlib import Path
 from typing import IO, Any, Protocol
+
+_iterencode: Any = (
+    json.JSONEncoder(ensure_ascii=False, allow_nan=False, default=str, check_circular=False).iterencode
+    if c_make_encoder is None  # a Python without the C accelerator
+    else c_make_encoder(None, str, encode_basestring, None, ": ", ", ", False, False, False)
+)  # markers, default, strings, indent, separators, sort_keys, skipkeys, allow_nan
+
+
+def encode(value: Any) -> str:
+    """`json.dumps(value, ensure_ascii=False, allow_nan=False, default=str)`, made by one encoder."""
+    return "".join(_iterencode(value, 0))
 
 
 class TraceSink(Protocol):
@@ -39,51 +51,41 @@ class JsonlTrace:
 
     The bytes are `json.dumps(record, ensure_ascii=False, allow_nan=False, default=str)`'s. The
     encoder is made once (`json.dumps` makes one a call); a record's pieces are kept as it yields
-    them; at the end of a tick they are joined and written in one call, and handed to the system
-    at most `SAVE_SECONDS` later (a killed run loses at most that much, never half a line).
+    them, or as the text `write_line` is given (records the engine encoded itself, the same bytes:
+    hfsm.runtime.records). At the end of a tick in which `SAVE_PIECES` are kept, or `SAVE_SECONDS`
+    after the last save, they are joined, written and handed to the system in one go (a killed run
+    loses at most that much, never half a line).
     """
 
     SAVE_SECONDS = 0.25
-    SAVE_CHARS = 1 << 18  # below the file's buffer, so that it never writes half a line itself
+    SAVE_PIECES = 1024
 
     def __init__(self, path: Path) -> None:
         self.path = path
-        self._file: IO[str] = path.open("w", encoding="utf-8", buffering=4 * self.SAVE_CHARS)
+        self._file: IO[str] = path.open("w", encoding="utf-8")
         self._pieces: list[str] = []
-        self._unsaved = 0
+        self.write_line: Callable[[str], None] = self._pieces.append  # a line or more, each ended by "\n"
         self._saved_at = time.monotonic()
-        if c_make_encoder is None:  # a Python without the C accelerator
-            encoder = json.JSONEncoder(ensure_ascii=False, allow_nan=False, default=str, check_circular=False)
-            self._iterencode: Any = lambda record, _: encoder.iterencode(record)
-        else:
-            self._iterencode = c_make_encoder(
-                None, str, encode_basestring, None, ": ", ", ", False, False, False
-            )  # markers, default, strings, indent, separators, sort_keys, skipkeys, allow_nan
 
     def write(self, record: dict[str, Any]) -> None:
         pieces = self._pieces
-        pieces.extend(self._iterencode(record, 0))
+        pieces.extend(_iterencode(record, 0))
         pieces.append("\n")
 
     def flush(self) -> None:
-        """End of a tick: its lines go to the file, and to the system when due."""
-        if self._pieces:
-            text = "".join(self._pieces)
-            self._pieces.clear()
-            self._file.write(text)
-            self._unsaved += len(text)
-        now = time.monotonic()
-        if self._unsaved and (self._unsaved >= self.SAVE_CHARS or now - self._saved_at >= self.SAVE_SECONDS):
-            self._save(now)
+        """End of a tick: its lines are kept, and go to the system when due."""
+        if len(self._pieces) >= self.SAVE_PIECES or time.monotonic() - self._saved_at >= self.SAVE_SECONDS:
+            self._save()
 
-    def _save(self, now: float) -> None:
-        self._file.flush()
-        self._unsaved = 0
-        self._saved_at = now
+    def _save(self) -> None:
+        if self._pieces:
+            self._file.write("".join(self._pieces))
+            self._pieces.clear()
+            self._file.flush()
+        self._saved_at = time.monotonic()
 
     def close(self) -> None:
-        self.flush()
-        self._save(time.monotonic())
+        self._save()
         self._file.close()
 
 

@@ -72,7 +72,6 @@ class Document:
         return Finding(self.file, line, col, code, message)
 
 
-
 @contextmanager
 def collector_paused() -> Iterator[None]:
     """Pause the cyclic garbage collector: reading creates many objects and no cycles to free."""

@@ -27,8 +27,8 @@ Public API (what the behaviours layer uses)::
     robot.set_head(yaw, pitch); robot.head(); robot.head_settled()   # rad; pitch down +
     robot.odometry() -> (x, y, yaw)            # own start frame, seeded drift
     robot.image("forward" | "down") -> np.ndarray  # H x W x 3 uint8 RGB, rendered now
-    robot.camera_model(camera) -> CameraModel  # fx, fy, cx, cy, fov, position, yaw, pitch;
-                                               #   ray(), ground_point(), project()
+    robot.camera_model(camera) -> CameraModel  # fx, fy, cx, cy, fov, position, yaw, pitch, odom;
+                                               #   to_plane(), ground_point(), project(), to_odom()
     robot.arms_lower(); robot.arms_lift(height)  # hand height above the floor, metres
     robot.arms_state() -> ArmState(height, target, settled)
     robot.holding() -> bool                    # the hands carry the table

@@ -1,81 +1,28 @@
-"""Head cameras: what a robot knows of them (CameraModel) and how they render (pybullet)."""
+"""Head cameras: a robot's model of them (`sim.perception.camera.CameraModel`, built here from
+the body profile, the head joints and odometry) and how they render."""
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 import pybullet as p
 
+from sim.perception.camera import NEAR, CameraModel, Pose, rot_y, rot_z
 from sim.profile import CAMERAS, BodyGeometry, CameraSpec
 from sim.raster import ROOM_LIGHT, Camera
 
-NEAR, FAR = 0.01, 30.0
+__all__ = ["NEAR", "CameraModel", "TinyRenderer", "camera_model", "camera_spec", "view_matrices",
+           "world_camera"]
+
+FAR = 30.0
 LIGHT = {"lightDirection": list(ROOM_LIGHT.direction), "lightColor": [1.0, 1.0, 1.0],
          "lightAmbientCoeff": ROOM_LIGHT.ambient, "lightDiffuseCoeff": ROOM_LIGHT.diffuse,
          "lightSpecularCoeff": 0.0}  # ROOM_LIGHT as pybullet's getCameraImage takes it
 
 
-def rot_z(a: float) -> np.ndarray:
-    c, s = math.cos(a), math.sin(a)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
-
-
-def rot_y(a: float) -> np.ndarray:
-    """Rotation about +y; a positive angle turns the x axis (the view) downwards."""
-    c, s = math.cos(a), math.sin(a)
-    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
-
-
-@dataclass(frozen=True)
-class CameraModel:
-    """Pinhole model of one head camera in the robot's body frame (x forward, y left, z up,
-    origin on the floor under the robot's centre). Pixel coordinates are continuous with
-    (0, 0) at the top-left corner, so pixel (i, j) has its centre at (i + 0.5, j + 0.5)."""
-
-    camera: str
-    width: int
-    height: int
-    fx: float
-    fy: float
-    cx: float
-    cy: float
-    hfov_deg: float
-    vfov_deg: float
-    position: tuple[float, float, float]
-    yaw: float
-    pitch: float
-
-    @property
-    def rotation(self) -> np.ndarray:
-        """Camera-to-body rotation (camera axes: x along the view, y left, z up)."""
-        return np.asarray(rot_z(self.yaw) @ rot_y(self.pitch))
-
-    def ray(self, u: float, v: float) -> np.ndarray:
-        """Unit direction in the body frame of the ray through pixel coordinate (u, v)."""
-        d = self.rotation @ np.array([1.0, -(u - self.cx) / self.fx, -(v - self.cy) / self.fy])
-        return np.asarray(d / np.linalg.norm(d))
-
-    def ground_point(self, u: float, v: float, plane_z: float = 0.0) -> tuple[float, float] | None:
-        """Body-frame (x, y) where the ray through (u, v) meets the plane z = plane_z."""
-        d = self.ray(u, v)
-        dz = plane_z - self.position[2]
-        if d[2] * dz <= 1e-9:
-            return None
-        t = dz / d[2]
-        return (self.position[0] + t * d[0], self.position[1] + t * d[1])
-
-    def project(self, point: tuple[float, float, float]) -> tuple[float, float] | None:
-        """Pixel coordinate of a body-frame point, or None if it is behind the camera."""
-        c = self.rotation.T @ (np.asarray(point, dtype=float) - np.asarray(self.position))
-        if c[0] <= NEAR:
-            return None
-        return (self.cx - self.fx * c[1] / c[0], self.cy - self.fy * c[2] / c[0])
-
-
 def camera_model(spec: CameraSpec, body: BodyGeometry, size: tuple[int, int],
-                 head_yaw: float, head_pitch: float) -> CameraModel:
+                 head_yaw: float, head_pitch: float, odom: Pose = (0.0, 0.0, 0.0)) -> CameraModel:
     width, height = size
     fy = (height / 2) / math.tan(math.radians(spec.vfov_deg) / 2)
     offset = rot_z(head_yaw) @ rot_y(head_pitch) @ np.array([spec.x, 0.0, spec.z])
@@ -83,7 +30,8 @@ def camera_model(spec: CameraSpec, body: BodyGeometry, size: tuple[int, int],
     return CameraModel(
         camera=spec.name, width=width, height=height, fx=fy, fy=fy, cx=width / 2, cy=height / 2,
         hfov_deg=math.degrees(2 * math.atan((width / 2) / fy)), vfov_deg=spec.vfov_deg,
-        position=position, yaw=head_yaw, pitch=head_pitch + math.radians(spec.pitch_deg))
+        position=position, yaw=head_yaw, pitch=head_pitch + math.radians(spec.pitch_deg),
+        odom=odom)
 
 
 def camera_spec(camera: str) -> CameraSpec:

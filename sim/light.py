@@ -81,6 +81,10 @@ class LightRobot(Base):
             self._target = self._leashed(self._target, dt)
             self._push_target()
 
+    def _unwind(self) -> None:
+        """Not on every new command: steered by a new velocity each tick, it would lose its lead each
+        tick and crawl; `_before_advance` keeps the lead within the leash instead."""
+
     def _pre_step(self, dt: float) -> None:
         if self._cmd != (0.0, 0.0, 0.0):
             self._target = self._ahead(dt)

@@ -109,9 +109,11 @@ class Robot(Base):
 
     # cameras
     def camera_model(self, camera: str = "forward") -> CameraModel:
-        """Intrinsics and mounting (height, pitch, yaw incl. the head joints) in the body frame."""
+        """Intrinsics, mounting (height, pitch, yaw incl. the head joints) in the body frame, and
+        the body's pose by odometry now."""
         yaw, pitch = self.head()
-        return camera_model(camera_spec(camera), self._g, self._image_size, yaw, pitch)
+        return camera_model(camera_spec(camera), self._g, self._image_size, yaw, pitch,
+                            self.odometry())
 
     def image(self, camera: str = "forward") -> np.ndarray:
         """Render this camera now: H x W x 3 uint8 RGB."""

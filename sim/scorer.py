@@ -40,18 +40,21 @@ class Scorer:
         return None
 
     def observe(self) -> None:
-        """Call after every physics step."""
+        """Call after every physics step: one query of all the world's contacts (each pair once)."""
         now: set[tuple[str, str, str]] = set()
-        for name in self._names:
-            for contact in p.getContactPoints(bodyA=self._truth.robot_id(name),
-                                              physicsClientId=self._cid):
-                if contact[8] > TOUCH:
+        ids = self._ids
+        for contact in p.getContactPoints(physicsClientId=self._cid):
+            if contact[8] > TOUCH:
+                continue
+            a, b = contact[1], contact[2]
+            for me, other in ((a, b), (b, a)):
+                name = ids.get(me)
+                if name is None:
                     continue
-                other = contact[2]
                 kind = self._kind(other)
                 if kind is not None:
                     self.bumps[name] = True
-                    partner = self._ids.get(other, "")
+                    partner = ids.get(other, "")
                     now.add((kind, min(name, partner), max(name, partner)) if partner
                             else (kind, name, ""))
         for key in now - self._touching:

@@ -133,7 +133,10 @@ class World:
             x, y, lift, yaw = truth.table_pose(i)
             tables.append([round(x, 4), round(y, 4), round(yaw, 4), body.spec.length, body.spec.width,
                            round(lift, 4)])
-        return {"room": [room.width, room.depth], "robots": robots, "tables": tables}
+        poses: dict[str, Any] = {"room": [room.width, room.depth], "robots": robots, "tables": tables}
+        if self.scenario.targets:  # [id, x, y]: where the team is sent (the paper's rooms have none)
+            poses["targets"] = [[t.id, t.x, t.y] for t in self.scenario.targets]
+        return poses
 
     def score(self) -> dict[str, Any]:
         """Ground-truth outcome; see sim.scorer.Scorer.score for the keys."""

@@ -10,15 +10,25 @@ from pathlib import Path
 from types import ModuleType
 from typing import Any
 
+import pytest
+
+from hfsm.cli.run import main
 from hfsm.load import load
 from hfsm.registry import Registry
 from hfsm.runtime.failing import Failure
 from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, RunResult, run
-from hfsm.trace import ListTrace
+from hfsm.trace import ListTrace, TraceSink
 from hfsm.world import NullWorld, World
 
 ROOT = Path(__file__).resolve().parent.parent
+
+
+def hfsm_run(capsys: pytest.CaptureFixture[str], *argv: object) -> tuple[int, str, str]:
+    """`hfsm-run ARGV` in process: its exit code, stdout and stderr."""
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
 
 
 def write(folder: Path, name: str, text: str) -> Path:
@@ -38,7 +48,9 @@ def execute(
     max_time: float = 3600.0,
     seed: int = 0,
     failures: Sequence[Failure] = (),
+    sink: TraceSink | None = None,
 ) -> tuple[RunResult, list[dict[str, Any]]]:
+    """Load and run `path`; its result, and the trace's records (none when `sink` takes them instead)."""
     registry = registry or Registry()
     loaded = load([path], registry=registry)
     top = loaded.roots[0]
@@ -46,7 +58,9 @@ def execute(
     program = Program(loaded.machines, registry, dt)
     trace = ListTrace()
     options = RunOptions(top.name, list(agents), full, seed, max_time, failures)
-    result = run(program, world or NullWorld(), options, trace)
+    result = run(program, world or NullWorld(), options, sink or trace)
+    if sink is not None:
+        sink.close()
     return result, trace.records
 
 

@@ -37,26 +37,30 @@ from docsection import write_section  # noqa: E402
 DOC = ROOT / "docs" / "PERFORMANCE.md"
 REV = "aa98aa6"  # main just before the runtime became a tree (a19a10b)
 SIZES = {"w1": 100_000, "w2": 20_000}
-GRIND = {"w1": 5_000, "w2": 2_000}  # callgrind: n and 2n transitions
+CELLS = {"w1": ("w1", "none"), "w2": ("w2", "none"), "w1_jsonl": ("w1", "jsonl"), "w2_jsonl": ("w2", "jsonl")}
+SIZES = {"w1": 100_000, "w2": 20_000, "w1_jsonl": 20_000, "w2_jsonl": 5_000}  # transitions timed
+GRIND = {"w1": 2_000, "w2": 1_000, "w1_jsonl": 2_000, "w2_jsonl": 1_000}  # callgrind: n and 2n
 REPEATS = 5
+MARK = "time_process_time"  # callgrind dumps its counts before each call of time.process_time
 
 
-def _work(kind: str, n: int, folder: Path) -> Any:
+def _work(cell: str, n: int, folder: Path) -> Any:
     from bench.hfsm_workloads import HfsmBench
 
+    kind, trace = CELLS[cell]
     bench = HfsmBench(folder)
-    return bench.flat(n) if kind == "w1" else bench.nested(n)
+    return bench.flat(n, trace) if kind == "w1" else bench.nested(n, trace)
 
 
 def worker(folder: Path) -> dict[str, Any]:
-    """Time W1 and W2 and count their calls, in this process (whichever hfsm it imports)."""
+    """Time each cell and count its calls, in this process (whichever hfsm it imports)."""
     import gc
 
     from bench.harness import count_calls
 
     out: dict[str, Any] = {}
-    for kind, n in SIZES.items():
-        work = _work(kind, n, folder)
+    for cell, n in SIZES.items():
+        work = _work(cell, n, folder)
         handle = work.prepare(n)
         work.execute(handle)  # warm-up
         wall, cpu = [], []
@@ -68,10 +72,22 @@ def worker(folder: Path) -> dict[str, Any]:
             wall.append(time.perf_counter() - begin)
             cpu.append(time.process_time() - begin_cpu)
             work.check(handle, n)
-        calls = count_calls(_work(kind, 1, folder), 1000, 2000)
-        out[kind] = {"wall": min(wall) / n, "cpu": min(cpu) / n, "calls": [calls.python, calls.builtin]}
+        calls = count_calls(_work(cell, 1, folder), 1000, 2000)
+        out[cell] = {"wall": min(wall) / n, "cpu": min(cpu) / n, "calls": [calls.python, calls.builtin]}
     out["hfsm"] = _hfsm_from()
     return out
+
+
+def grind_worker(folder: Path) -> None:
+    """Each cell at n and at 2n transitions, each run between two calls of time.process_time."""
+    for cell, n in GRIND.items():
+        for size in (n, 2 * n):
+            work = _work(cell, size, folder)
+            handle = work.prepare(size)
+            time.process_time()
+            work.execute(handle)
+            time.process_time()
+            work.check(handle, size)
 
 
 def _hfsm_from() -> str:
@@ -87,14 +103,6 @@ def _hfsm_from() -> str:
     return folders.pop()
 
 
-def once(kind: str, n: int, folder: Path) -> None:
-    """One run of `kind` at n transitions, checked (what callgrind counts)."""
-    work = _work(kind, n, folder)
-    handle = work.prepare(n)
-    work.execute(handle)
-    work.check(handle, n)
-
-
 def _env(code: Path) -> dict[str, str]:
     return dict(os.environ, PYTHONPATH=f"{code}{os.pathsep}{TOOLS}", PYTHONHASHSEED="0")
 
@@ -108,20 +116,22 @@ def spawn(code: Path, *args: str) -> dict[str, Any]:
     return result
 
 
-def instructions(code: Path, kind: str, n: int) -> int:
-    """Instructions callgrind counts in a whole process that runs `kind` at n transitions."""
-    command = ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null", sys.executable]
-    command += [str(Path(__file__).resolve()), "--worker", "--once", kind, str(n)]
-    done = subprocess.run(command, capture_output=True, text=True, env=_env(code), check=False)
-    found = re.search(r"Collected : (\d+)", done.stderr)
-    if done.returncode != 0 or found is None:
-        raise SystemExit(f"callgrind on {code} failed:\n{done.stderr[-2000:]}")
-    return int(found.group(1))
-
-
-def per_transition(code: Path, kind: str) -> float:
-    n = GRIND[kind]
-    return (instructions(code, kind, 2 * n) - instructions(code, kind, n)) / n
+def instructions(code: Path) -> dict[str, float]:
+    """Instructions a transition of each cell, from one callgrind run of `grind_worker`."""
+    with tempfile.TemporaryDirectory(prefix="bench_before_grind_") as folder:
+        out = Path(folder) / "cg.out"
+        command = ["valgrind", "--tool=callgrind", f"--dump-before={MARK}", f"--callgrind-out-file={out}"]
+        command += [sys.executable, str(Path(__file__).resolve()), "--worker", "--grind"]
+        done = subprocess.run(command, capture_output=True, text=True, env=_env(code), check=False)
+        if done.returncode != 0:
+            raise SystemExit(f"callgrind on {code} failed:\n{done.stderr[-2000:]}")
+        dumps = {int(p.suffix[1:]): p for p in Path(folder).glob("cg.out.*")}
+        total = {j: int(re.search(r"^totals: (\d+)", p.read_text(), re.M).group(1)) for j, p in dumps.items()}  # type: ignore[union-attr]
+    # the dump before the process_time call that ends a run holds the run: calls 2, 4, 6, ...
+    got = {}
+    for i, (cell, n) in enumerate(GRIND.items()):
+        got[cell] = (total[4 * i + 4] - total[4 * i + 2]) / n
+    return got
 
 
 def _git(*args: str) -> subprocess.CompletedProcess[bytes]:
@@ -222,12 +232,12 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--callgrind", action="store_true", help="also count instructions with callgrind")
     parser.add_argument("--no-doc", action="store_true", help="print only; leave PERFORMANCE.md")
     parser.add_argument("--worker", action="store_true", help=argparse.SUPPRESS)
-    parser.add_argument("--once", nargs=2, metavar=("KIND", "N"), help=argparse.SUPPRESS)
+    parser.add_argument("--grind", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.worker:
         with tempfile.TemporaryDirectory(prefix="bench_before_") as folder:
-            if args.once:
-                once(args.once[0], int(args.once[1]), Path(folder))
+            if args.grind:
+                grind_worker(Path(folder))
             else:
                 print(json.dumps(worker(Path(folder))))
         return 0
@@ -235,7 +245,7 @@ def main(argv: list[str] | None = None) -> int:
         codes = {"before": checkout(args.rev, Path(folder)), "now": ROOT}
         grind: dict[str, dict[str, float]] = {}
         if args.callgrind:
-            grind = {name: {k: per_transition(code, k) for k in GRIND} for name, code in codes.items()}
+            grind = {name: instructions(code) for name, code in codes.items()}
             print(f"callgrind instructions a transition: {grind}", file=sys.stderr)
         runs = measure(codes, args.rounds)
         for name, code in codes.items():

@@ -3,9 +3,10 @@ finds, write PNGs to docs/perception/, and (with --time) time each perception ca
 
 Usage: .venv/bin/python tools/perception_gallery.py [--size 320x240] [--out docs/perception]
        [--time]
-Colours in the pictures: yellow box = table blob, red dot = lowest pixel, magenta = the V
-(corner and its two edges), cyan lines = Figure 5 centre band and the 80 % row, green =
-floor-wall edge, white = table top outline, orange box = other robot, red line = down edge.
+Colours in the pictures: yellow box = table blob, red dot = lowest pixel, cyan lines = Figure 5
+centre band and the 80 % row, magenta = each table top's rectangle (from the floor plan back into
+the image; the text gives it in the odometry frame), green = floor-wall line, orange box = other
+robot, red line = the near edge (down).
 """
 
 from __future__ import annotations
@@ -25,46 +26,55 @@ ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-from sim.camera import CameraModel  # noqa: E402
 from sim.perception import (  # noqa: E402
     DEFAULT_CONFIG,
     Blob,
-    down_view,
-    find_corner,
+    CameraModel,
     find_robots,
-    floor_wall_edge,
+    floor_wall_line,
+    near_edge,
+    see_tables,
     table_distance,
-    table_top_outline,
-    wall_meet,
+    table_rect,
+    wall_to_side,
 )
+from sim.robot import Robot  # noqa: E402
 from sim.scenario import scenario_from_dict  # noqa: E402
 from sim.world import World  # noqa: E402
 
 Colour = tuple[int, int, int]
-# name: (room, table, robots, head yaw/pitch in degrees, camera)
-VIEWS: dict[str, tuple[dict[str, float], dict[str, float], dict[str, dict[str, float]],
+Tables = list[dict[str, float]]
+# name: (room, tables, robots, head yaw/pitch in degrees, camera)
+VIEWS: dict[str, tuple[dict[str, float], Tables, dict[str, dict[str, float]],
                        tuple[float, float], str]] = {
-    "far_2m": ({"width": 5, "depth": 5}, {}, {"r1": {"x": -1.81, "y": -1.66, "yaw": 50},
+    "far_2m": ({"width": 5, "depth": 5}, [{}], {"r1": {"x": -1.81, "y": -1.66, "yaw": 50},
                                               "r2": {"x": 1.3, "y": 1.0, "yaw": -140}}, (0, 0), "forward"),
-    "corner_0.8m": ({"width": 5, "depth": 5}, {}, {"r1": {"x": -0.97, "y": -0.82, "yaw": 45}},
+    "corner_0.8m": ({"width": 5, "depth": 5}, [{}], {"r1": {"x": -0.97, "y": -0.82, "yaw": 45}},
                     (0, 15), "forward"),
-    "look_left_at_corner": ({"width": 5, "depth": 5}, {}, {"r1": {"x": -0.97, "y": -0.82, "yaw": 45}},
+    "look_left_at_corner": ({"width": 5, "depth": 5}, [{}], {"r1": {"x": -0.97, "y": -0.82, "yaw": 45}},
                             (35, 15), "forward"),
-    "wall_over_table": ({"width": 6, "depth": 6}, {"x": 2.25, "y": 0.0, "yaw": 90},
+    "wall_over_table": ({"width": 6, "depth": 6}, [{"x": 2.25, "y": 0.0, "yaw": 90}],
                         {"r1": {"x": 0.5, "y": 0.05, "yaw": 0}}, (0, 0), "forward"),
-    "assistant_sees_leader": ({"width": 5, "depth": 5}, {},
+    "assistant_sees_leader": ({"width": 5, "depth": 5}, [{}],
                               {"r1": {"x": -1.6, "y": 0.1, "yaw": 0},
                                "r2": {"x": 0.65, "y": 0.0, "yaw": 180}},
                               (0, 5), "forward"),
-    "down_at_grip": ({"width": 4, "depth": 4}, {}, {"r1": {"x": 0.1, "y": -0.38, "yaw": 98}}, (0, 0), "down"),
+    "down_at_grip": ({"width": 4, "depth": 4}, [{}], {"r1": {"x": 0.1, "y": -0.38, "yaw": 98}},
+                     (0, 0), "down"),
+    "three_tables": ({"width": 8, "depth": 8},
+                     [{"x": 0.0, "y": 0.0}, {"x": -1.3, "y": -0.5, "yaw": 60, "length": 1.0},
+                      {"x": 1.4, "y": -0.6, "yaw": 100, "width": 0.6}],
+                     {"r1": {"x": 0.0, "y": -1.4, "yaw": 90}, "r2": {"x": 0.0, "y": -0.5, "yaw": -90}},
+                     (22, 14), "forward"),
 }
 
 
 def render(name: str, size: tuple[int, int]) -> tuple[np.ndarray, CameraModel]:
-    room, table, robots, (hy, hp), camera = VIEWS[name]
-    scenario = scenario_from_dict({"room": room, "table": table, "robots": robots})
+    room, tables, robots, (hy, hp), camera = VIEWS[name]
+    scenario = scenario_from_dict({"room": room, "tables": tables, "robots": robots})
     with World(scenario, 0, image_size=size) as world:
         robot = world.robots["r1"]
+        assert isinstance(robot, Robot)
         robot.set_head(math.radians(hy), math.radians(hp))
         world.advance(1.0)
         return robot.image(camera), robot.camera_model(camera)
@@ -80,19 +90,24 @@ def _box(img: np.ndarray, blob: Blob, colour: Colour) -> None:
 
 
 def _guides(out: np.ndarray, image: np.ndarray) -> None:
-    """Figure 5 band and 80 % row, table top outline, floor-wall edge."""
+    """Figure 5 band and 80 % row, floor-wall line."""
     h, w = out.shape[:2]
     half = DEFAULT_CONFIG.centre_margin * w / 2
     for u in (w / 2 - half, w / 2 + half):
         cv2.line(out, (round(u), 0), (round(u), h - 1), (255, 255, 0), 1)
     row = round(DEFAULT_CONFIG.near_row_fraction * h)
     cv2.line(out, (0, row), (w - 1, row), (255, 255, 0), 1)
-    us, tops = table_top_outline(image)
-    out[tops.astype(int), us.astype(int)] = (255, 255, 255)
-    fw = floor_wall_edge(image)
-    if fw.found:
-        seen = ~np.isnan(fw.rows)
-        out[np.minimum(h - 1, fw.rows[seen].astype(int)), np.nonzero(seen)[0]] = (0, 255, 0)
+    us, vs = floor_wall_line(image)
+    out[np.minimum(h - 1, vs.astype(int)), us.astype(int)] = (0, 255, 0)
+
+
+def _polyline(out: np.ndarray, cam: CameraModel, points: list[tuple[float, float]], z: float,
+              colour: Colour, closed: bool) -> None:
+    """Body-frame floor-plan points at height z, drawn where the camera sees them."""
+    pixels = [cam.project((x, y, z)) for x, y in points]
+    if all(p is not None for p in pixels):
+        poly = np.array([_pt(p) for p in pixels if p is not None], np.int32)
+        cv2.polylines(out, [poly], closed, colour, 1)
 
 
 def annotate_forward(image: np.ndarray, cam: CameraModel) -> np.ndarray:
@@ -107,15 +122,16 @@ def annotate_forward(image: np.ndarray, cam: CameraModel) -> np.ndarray:
         cv2.circle(out, _pt(ground.pixel), 3, (0, 0, 255), -1)
         text.append(f"table {ground.distance:.2f} m {math.degrees(ground.bearing):+.0f} deg"
                     + (" (clipped)" if ground.clipped else ""))
-    c = find_corner(image, cam)
-    for e in (c.left, c.right):
-        if e.found:
-            cv2.line(out, _pt(e.start), _pt(e.end), (255, 0, 255), 2)
-    if c.found:
-        text.append(f"V={c.is_v} L {c.left.length_m:.2f} R {c.right.length_m:.2f} m")
-    m = wall_meet(image, cam)
-    if m.found:
-        text.append(f"wall gap {m.gap_px:.0f} px {m.gap_m:.2f} m meets={m.meets}")
+    for seen in see_tables([(image, cam)]):
+        rect = seen.rect
+        corners = [(float(x), float(y)) for x, y in cam.to_body(np.array(rect.corners()))]
+        _polyline(out, cam, corners, DEFAULT_CONFIG.table_top_height, (255, 0, 255), True)
+        text.append(f"table {rect.length:.2f} x {rect.width:.2f} m at ({rect.x:.2f}, {rect.y:.2f})"
+                    f" {math.degrees(rect.axis):+.0f} deg" + (" (clipped)" if seen.clipped else ""))
+    for side in ("left", "right"):
+        wall = wall_to_side(image, cam, side)
+        if wall.found:
+            text.append(f"wall {side} {wall.distance:.2f} m")
     for i, t in enumerate(text):
         cv2.putText(out, t, (3, 12 + 12 * i), cv2.FONT_HERSHEY_PLAIN, 0.8, (255, 255, 255), 1)
     return out
@@ -123,15 +139,15 @@ def annotate_forward(image: np.ndarray, cam: CameraModel) -> np.ndarray:
 
 def annotate_down(image: np.ndarray, cam: CameraModel) -> np.ndarray:
     out = image[:, :, ::-1].copy()
-    w = out.shape[1]
-    d = down_view(image, cam)
-    if d.edge_found:
-        slope = -math.tan(math.radians(d.image_angle_deg))
-        p0 = (0, round(d.edge_v - slope * w / 2))
-        p1 = (w - 1, round(d.edge_v + slope * (w / 2 - 1)))
-        cv2.line(out, p0, p1, (0, 0, 255), 2)
-    cv2.putText(out, f"blue {d.blue_fraction:.2f} edge {d.angle_deg:+.1f} deg {d.distance:.3f} m",
-                (3, 12), cv2.FONT_HERSHEY_PLAIN, 0.8, (255, 255, 255), 1)
+    edge = near_edge(image, cam)
+    text = "no near edge"
+    if edge.found:
+        c, s = math.cos(edge.turn), math.sin(edge.turn)
+        centre = (edge.distance * c, edge.distance * s)
+        ends = [(centre[0] - k * s, centre[1] + k * c) for k in (-0.5, 0.5)]
+        _polyline(out, cam, ends, DEFAULT_CONFIG.table_edge_height, (0, 0, 255), False)
+        text = f"near edge {edge.distance:.3f} m, turn {math.degrees(edge.turn):+.1f} deg"
+    cv2.putText(out, text, (3, 12), cv2.FONT_HERSHEY_PLAIN, 0.8, (255, 255, 255), 1)
     return out
 
 
@@ -163,10 +179,11 @@ def _time_size(size: tuple[int, int]) -> dict[str, float]:
     down, dcam = render("down_at_grip", size)
     return {"table_distance": _ms(lambda: table_distance(fwd, cam)),
             "find_robots (5 colours)": _ms(lambda: find_robots(fwd)),
-            "find_corner": _ms(lambda: find_corner(fwd, cam)),
-            "floor_wall_edge": _ms(lambda: floor_wall_edge(wall)),
-            "wall_meet": _ms(lambda: wall_meet(wall, wcam)),
-            "down_view": _ms(lambda: down_view(down, dcam))}
+            "table_rect": _ms(lambda: table_rect(fwd, cam)),
+            "see_tables": _ms(lambda: see_tables([(fwd, cam)])),
+            "floor_wall_line": _ms(lambda: floor_wall_line(wall)),
+            "wall_to_side": _ms(lambda: wall_to_side(wall, wcam, "left")),
+            "near_edge": _ms(lambda: near_edge(down, dcam))}
 
 
 def timings() -> None:

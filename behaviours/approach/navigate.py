@@ -6,21 +6,24 @@ import math
 from dataclasses import dataclass
 
 from behaviours.approach.frames import Point, Side, bearing_to, distance, nearest_side, wrap
-from behaviours.approach.sight import observe_table
+from behaviours.approach.sight import observe_table, observe_tables
 from behaviours.body import Body
-from sim.perception.table_rect import TableRect
+from sim.perception import NO_RECT, TableRect, pick_table
 
 
 @dataclass(frozen=True)
 class Look:
     """How to look at the table top: head pitch, yaw spread between views, views, and the
-    brightness share that marks the top face."""
+    brightness share that marks the top face. With a `target` (odometry frame: where a task
+    says its table is), only the table seen nearest it, within `gate` metres, is the table."""
 
     pitch: float = 0.3
     spread: float = 0.7
     views: int = 3
     value_ratio: float = 0.9
     size_tolerance: float = 0.1
+    target: Point | None = None
+    gate: float = 0.6
 
 
 @dataclass(frozen=True)
@@ -41,9 +44,16 @@ def walk_to(body: Body, point: Point) -> None:
 
 
 def look_at_table(body: Body, rect: TableRect | None, look: Look) -> TableRect:
-    """A fresh rectangle, looking towards where the table was last seen (ahead if never)."""
-    centre = bearing_to(body.odometry(), (rect.x, rect.y)) if rect and rect.found else 0.0
-    return observe_table(body, centre, look.spread, look.pitch, look.value_ratio, look.views)
+    """A fresh rectangle, looking towards where the table was last seen (else towards the
+    target, else ahead). With a target, the table seen nearest to where it was last seen (else
+    to the target) is the one."""
+    last = (rect.x, rect.y) if rect and rect.found else look.target
+    centre = bearing_to(body.odometry(), last) if last else 0.0
+    if look.target is None or last is None:
+        return observe_table(body, centre, look.spread, look.pitch, look.value_ratio, look.views)
+    seen = observe_tables(body, centre, look.spread, look.pitch, look.value_ratio, look.views)
+    picked = pick_table(seen, last, look.gate)
+    return picked.rect if picked else NO_RECT
 
 
 def agrees(fresh: TableRect, ref: TableRect, size_tolerance: float) -> bool:

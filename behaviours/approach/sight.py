@@ -10,8 +10,21 @@ import numpy as np
 
 from behaviours.approach.frames import Point, body_to_odom
 from behaviours.body import Body
-from sim.perception import Blob, blob_ground, find_robots, find_table, is_below, pixel_bearing
-from sim.perception.table_rect import NO_RECT, TableRect, fit_rect, outline_points
+from sim.perception import (
+    NO_RECT,
+    Blob,
+    CameraModel,
+    TableRect,
+    TableSeen,
+    blob_ground,
+    find_robots,
+    find_table,
+    fit_rect,
+    is_below,
+    outline_points,
+    pixel_bearing,
+    see_tables,
+)
 
 HEAD_YAW_LIMIT = 2.0  # rad; within the NAO's +-119.5 deg
 
@@ -58,28 +71,32 @@ def see_table(body: Body, yaw: float, pitch: float) -> TableSighting | None:
                          ground.clipped)
 
 
-def table_points(body: Body, yaws: Sequence[float], pitch: float,
-                 value_ratio: float) -> list[np.ndarray]:
-    """Outline points of the top face from several head yaws, in the odometry frame."""
-    pose = body.odometry()
-    views = []
-    for yaw in yaws:
-        body.look(clamp_yaw(yaw), pitch)
-        pts = outline_points(body.image("forward"), body.camera("forward"), value_ratio)
-        views.append(np.array([body_to_odom(pose, (float(x), float(y))) for x, y in pts]
-                              ).reshape(-1, 2))
-    return views
+def look_around(body: Body, centre: float, spread: float, pitch: float, views: int
+                ) -> list[tuple[np.ndarray, CameraModel]]:
+    """Forward images (with the camera model of each) from `views` head yaws spread around the
+    bearing `centre` (body frame). The robot stands still meanwhile."""
+    out = []
+    for i in range(views):
+        body.look(clamp_yaw(centre + spread * (i - (views - 1) / 2)), pitch)
+        out.append((body.image("forward"), body.camera("forward")))
+    return out
 
 
 def observe_table(body: Body, centre: float, spread: float, pitch: float,
                   value_ratio: float = 0.9, views: int = 3) -> TableRect:
-    """The table top as a rectangle in the odometry frame, from `views` head yaws spread
-    around the bearing `centre` (body frame). The robot stands still meanwhile."""
-    yaws = [centre + spread * (i - (views - 1) / 2) for i in range(views)]
-    points = table_points(body, yaws, pitch, value_ratio)
+    """The table top as a rectangle in the odometry frame, from every top face seen in
+    `views` head yaws spread around the bearing `centre` (body frame)."""
+    points = [camera.to_odom(outline_points(image, camera, value_ratio))
+              for image, camera in look_around(body, centre, spread, pitch, views)]
     if sum(len(p) for p in points) == 0:
         return NO_RECT
     return fit_rect(points)
+
+
+def observe_tables(body: Body, centre: float, spread: float, pitch: float,
+                   value_ratio: float = 0.9, views: int = 3) -> list[TableSeen]:
+    """Every table seen in those views, told apart (odometry frame, nearest first)."""
+    return see_tables(look_around(body, centre, spread, pitch, views), value_ratio)
 
 
 def own_colour(body: Body, pitch: float = 0.5) -> int:

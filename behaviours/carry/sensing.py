@@ -1,13 +1,13 @@
 """What the carrying robot senses, in one call each: turn the head, take one image, measure.
 
-Thin wrappers over `sim.perception.carry` for the primitives of this package; every angle is a
+Thin wrappers over `sim.perception` (edge, reach, walls) for the primitives of this package; every angle is a
 head pose the primitive passes in (its params), never a constant buried here.
 """
 
 from __future__ import annotations
 
 from behaviours.body import Body
-from sim.perception.carry import NearEdge, SideExtent, WallSeen, near_edge, side_extent, wall_to_side
+from sim.perception import NearEdge, SideExtent, WallSeen, near_edge, side_extent, wall_to_side
 
 
 def side_sign(side: str) -> float:

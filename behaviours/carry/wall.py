@@ -7,7 +7,7 @@ import math
 from behaviours.body import Body
 from behaviours.carry.sensing import edge, extent, side_sign, wall
 from hfsm.primitive import Context, Outcome, primitive
-from sim.perception.carry import WallSeen
+from sim.perception import WallSeen
 
 
 @primitive(outcomes=["chosen", "failure"], outputs=["direction", "distance"], world="sim")

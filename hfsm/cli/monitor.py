@@ -22,15 +22,28 @@ class TraceError(UsageError):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="hfsm-monitor", description=__doc__,
-                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p = argparse.ArgumentParser(
+        prog="hfsm-monitor", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     p.add_argument("trace", type=Path, metavar="TRACE.jsonl", help="a trace written by hfsm-run --trace")
     p.add_argument("--port", type=int, default=0, help="port on 127.0.0.1 (default: any free port)")
-    p.add_argument("--lib", action="append", type=Path, default=[], metavar="DIR",
-                   help="more folders to find the run's machines in")
+    p.add_argument(
+        "--lib",
+        action="append",
+        type=Path,
+        default=[],
+        metavar="DIR",
+        help="more folders to find the run's machines in",
+    )
     p.add_argument("--machine", type=Path, metavar="FILE", help="the run's top machine file")
-    p.add_argument("--for", dest="seconds", type=float, default=None, metavar="S",
-                   help="serve for S seconds, then exit (default: until Ctrl-C)")
+    p.add_argument(
+        "--for",
+        dest="seconds",
+        type=float,
+        default=None,
+        metavar="S",
+        help="serve for S seconds, then exit (default: until Ctrl-C)",
+    )
     return p
 
 
@@ -41,8 +54,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         from hfsm.monitor.hub import Hub
         from hfsm.monitor.serve import Server, hold
 
-        video = next((v for v in (args.trace.with_suffix(".mp4"), args.trace.with_suffix(".webm"))
-                      if v.is_file()), None)
+        video = next(
+            (v for v in (args.trace.with_suffix(".mp4"), args.trace.with_suffix(".webm")) if v.is_file()),
+            None,
+        )
         server = Server(Hub(records), svgs, args.trace.name, args.port, video)
     except UserError as err:
         for finding in err.findings:
@@ -109,8 +124,10 @@ def find_machine(name: str, folders: list[Path]) -> Path | None:
             candidate = folder / f"{name}{suffix}"
             if candidate.is_file():
                 return candidate
-    print(f"hfsm-monitor: no machine file '{name}' found (use --machine): the page shows paths only",
-          file=sys.stderr)
+    print(
+        f"hfsm-monitor: no machine file '{name}' found (use --machine): the page shows paths only",
+        file=sys.stderr,
+    )
     return None
 
 

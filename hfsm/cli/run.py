@@ -239,6 +239,5 @@ def entry() -> None:
     sys.exit(main())
 
 
-
 if __name__ == "__main__":
     entry()

@@ -46,8 +46,14 @@ class TraceFile:
             line = _encode(record)
         except ValueError:
             line = _encode(_finite(record))
+        self.write_line(line + "\n")
+
+    def write_line(self, line: str) -> None:
+        """Records already encoded as `write` would, each ended by a newline (hfsm.runtime.records)."""
+        if self.failed:
+            return
         try:
-            self._file.write(line + "\n")
+            self._file.write(line)
         except OSError as exc:
             self._fail(exc)
 

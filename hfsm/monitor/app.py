@@ -37,13 +37,17 @@ def create_app(hub: Hub, svgs: Mapping[str, str], title: str, video: Path | None
     async def records(request: Request) -> Response:
         start = _int(request.query_params.get("from"), 0)
         batch = hub.since(start)
-        return JSONResponse({"records": batch, "next": start + len(batch), "ended": hub.ended,
-                             "dropped": hub.dropped})
+        return JSONResponse(
+            {"records": batch, "next": start + len(batch), "ended": hub.ended, "dropped": hub.dropped}
+        )
 
     async def stream(request: Request) -> Response:
         start = _int(request.query_params.get("from"), 0)
-        return StreamingResponse(_events(hub, start, request), media_type="text/event-stream",
-                                 headers={"Cache-Control": "no-store"})
+        return StreamingResponse(
+            _events(hub, start, request),
+            media_type="text/event-stream",
+            headers={"Cache-Control": "no-store"},
+        )
 
     routes = [
         Route("/", page),

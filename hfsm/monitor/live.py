@@ -21,13 +21,27 @@ from hfsm.trace import TraceSink
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     group = p.add_argument_group("monitor")
-    group.add_argument("--monitor", nargs="?", const=0, type=int, metavar="PORT",
-                       help="serve a live page of the run on 127.0.0.1 (default: any free port)")
-    group.add_argument("--monitor-hold", type=_seconds, metavar="S",
-                       help="after the run, keep the page up S seconds (default: until Ctrl-C on a "
-                            "terminal, else not at all)")
-    group.add_argument("--realtime", type=_speed, metavar="K",
-                       help="pace the run to K times real time, to watch it (default: as fast as it goes)")
+    group.add_argument(
+        "--monitor",
+        nargs="?",
+        const=0,
+        type=int,
+        metavar="PORT",
+        help="serve a live page of the run on 127.0.0.1 (default: any free port)",
+    )
+    group.add_argument(
+        "--monitor-hold",
+        type=_seconds,
+        metavar="S",
+        help="after the run, keep the page up S seconds (default: until Ctrl-C on a "
+        "terminal, else not at all)",
+    )
+    group.add_argument(
+        "--realtime",
+        type=_speed,
+        metavar="K",
+        help="pace the run to K times real time, to watch it (default: as fast as it goes)",
+    )
 
 
 def _float(text: str) -> float:
@@ -123,8 +137,14 @@ class LiveMonitor:
         self.server.stop()
 
 
-def sinks(args: argparse.Namespace, trace: TraceSink | None, loaded: Loaded, registry: Registry,
-          title: str, world: object) -> tuple[TraceSink | None, LiveMonitor | None]:
+def sinks(
+    args: argparse.Namespace,
+    trace: TraceSink | None,
+    loaded: Loaded,
+    registry: Registry,
+    title: str,
+    world: object,
+) -> tuple[TraceSink | None, LiveMonitor | None]:
     """The run's trace sink with the monitor, the pacer and the world's own reader (a video's
     labels) added as asked; and the monitor."""
     extra: list[TraceSink] = []

@@ -20,15 +20,21 @@ HOST = "127.0.0.1"
 class Server:
     """A uvicorn server on HOST:port (port 0: a free one) running in a daemon thread."""
 
-    def __init__(self, hub: Hub, svgs: Mapping[str, str], title: str, port: int = 0,
-                 video: Path | None = None) -> None:
+    def __init__(
+        self, hub: Hub, svgs: Mapping[str, str], title: str, port: int = 0, video: Path | None = None
+    ) -> None:
         self._socket = _bind(port)
         self.port = self._socket.getsockname()[1]
-        config = uvicorn.Config(create_app(hub, svgs, title, video), log_level="warning", lifespan="off",
-                                timeout_graceful_shutdown=1)
+        config = uvicorn.Config(
+            create_app(hub, svgs, title, video),
+            log_level="warning",
+            lifespan="off",
+            timeout_graceful_shutdown=1,
+        )
         self._server = uvicorn.Server(config)
-        self._thread = threading.Thread(target=self._server.run, kwargs={"sockets": [self._socket]},
-                                        name="hfsm-monitor", daemon=True)
+        self._thread = threading.Thread(
+            target=self._server.run, kwargs={"sockets": [self._socket]}, name="hfsm-monitor", daemon=True
+        )
 
     @property
     def url(self) -> str:

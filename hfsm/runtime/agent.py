@@ -61,7 +61,7 @@ class Frame:
 
     __slots__ = (
         "_prefix", "_scope", "agent", "attempt", "below", "deadline", "entered", "machine", "params",
-        "retry_at", "started", "state", "state_deadline", "up", "vars", "vars_shown",
+        "retry_at", "started", "state", "state_deadline", "text", "up", "vars", "vars_shown",
     )  # fmt: skip
     entered: int  # the tick its current state was entered (set on entering it, as the two below)
     state_deadline: int | None
@@ -78,6 +78,7 @@ class Frame:
         self.up = up
         self._scope: Scope | None = None
         self._prefix: tuple[str, ...] | None = None
+        self.text: str | None = None  # the JSON of its prefix, made by the trace's TextRecords
         self.state: RState = machine.initial  # type: ignore[assignment]
         self.deadline: int | None = None  # the machine timer's tick
         self.retry_at: int | None = None  # the tick a retry's delay ends in

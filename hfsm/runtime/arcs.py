@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 from hfsm.expr import ExprValueError
 from hfsm.runtime.agent import Event, Frame, Region
 from hfsm.runtime.calls import Calls
@@ -55,8 +53,8 @@ class Arcs(Calls):
                     self._save(frame, state.save, event.outputs)
             else:
                 target = self._other_target(frame, state, event)
-            if self.trace is not None:
-                self._arc_record(frame, state, event, target)
+            if self.records is not None:
+                self.records.arc(frame, state, event, target)
             do = state.do
             if do:  # _leave's statistics, without its call
                 stats = frame.agent.stats.get(do) or frame.agent.new_stats(do)
@@ -84,14 +82,6 @@ class Arcs(Calls):
             self.emit(frame.agent, frame.path(), "error", message=event.error)
         return state.error_target
 
-    def _arc_record(self, frame: Frame, state: RState, event: Event, target: RState | str | None) -> None:
-        shown = target.name if target.__class__ is RState else target
-        extra = self._vars_of(frame)
-        if state.do == "barrier" and event.outputs:
-            extra["arrived"] = event.outputs.get("arrived")  # who the barrier heard (the monitor)
-        self.emit(frame.agent, frame.path(), "event", event=event.name, target=shown, **extra)
-        self.emit(frame.agent, frame.path(), "exit", event=event.name)
-
     def _enter(self, frame: Frame, state: RState) -> Event | None:
         agent = frame.agent
         frame.state = state
@@ -99,8 +89,8 @@ class Arcs(Calls):
         frame.state_deadline = None
         frame.attempt = 1
         bad_timer = None if state.timer is None else self._start_timer(frame, state)
-        if self.trace is not None:
-            self.emit(agent, frame.path(), "enter", **self._entered(frame, state))
+        if self.records is not None:
+            self.records.enter(frame, state)
         agent.entries += 1
         if agent.entries > MAX_ENTRIES:
             path = "/".join(frame.path())
@@ -134,24 +124,6 @@ class Arcs(Calls):
             return ticks
         frame.state_deadline = self.tick + ticks  # type: ignore[operator]
         return None
-
-    def _entered(self, frame: Frame, state: RState) -> dict[str, Any]:
-        """What an `enter` record tells beside its path: the callee, when the state's and the
-        machine's timers fire (seconds), and the machine's vars when the trace has not shown them."""
-        extra: dict[str, Any] = {"do": state.do} if state.do else {}
-        if frame.state_deadline is not None:
-            extra["deadline"] = round(frame.state_deadline * self.dt, 9)
-        if frame.deadline is not None:
-            extra["machine_deadline"] = round(frame.deadline * self.dt, 9)
-        extra.update(self._vars_of(frame))
-        return extra
-
-    def _vars_of(self, frame: Frame) -> dict[str, Any]:
-        """`{"vars": {...}}` once after the machine's vars change (a trace shows values on change)."""
-        if frame.vars_shown:
-            return {}
-        frame.vars_shown = True
-        return {"vars": dict(frame.vars)}
 
     def _choose(self, frame: Frame, state: RState) -> Event:
         for condition, text, target in state.branches:

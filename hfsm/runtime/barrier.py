@@ -6,7 +6,8 @@ A notice (N, r) says "I am at barrier N, round r". Notices travel through the wo
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any, Protocol
 
 from hfsm.names import did_you_mean
 from hfsm.primitive import Message
@@ -23,9 +24,14 @@ class Team:
 
     def __init__(self, engine: Core) -> None:
         self.engine = engine
-        self.order = {a.name: i for i, a in enumerate(engine.agents)}
-        self.rounds: dict[str, dict[str, int]] = {a.name: {} for a in engine.agents}
-        self.heard: dict[str, dict[tuple[str, str], int]] = {a.name: {} for a in engine.agents}
+        # A world may script team mates that are no agents of the run (a behaviour test's partners):
+        # members of barriers after the agents, whose notices the world sends.
+        partners = getattr(engine.world, "partners", None)
+        self.partners: Partners | None = partners
+        names = [a.name for a in engine.agents] + (list(partners.names()) if partners else [])
+        self.order = {name: i for i, name in enumerate(names)}
+        self.rounds: dict[str, dict[str, int]] = {name: {} for name in names}
+        self.heard: dict[str, dict[tuple[str, str], int]] = {name: {} for name in names}
         self.waiting: list[Barrier] = []
         # Notices in flight that raise what their receiver holds: (to, name, sender, round).
         self.fresh: set[tuple[str, str, str, int]] = set()
@@ -66,17 +72,21 @@ class Team:
         It can while it holds enough notices, or while a notice it lacks can still come: one in
         flight, one a partner sends while waiting in it, or a partner's answer to its next notice.
         """
-        by_name = self.engine.by_name
         for b in self.waiting:
             held = self.arrived(b)
             if len(held) >= b.need:
                 return True
             for other in b.members:
-                if other not in held and by_name[other].failed is None and self._can_come(b, other):
+                if other not in held and self._can_come(b, other):
                     return True
         return False
 
     def _can_come(self, b: Barrier, other: str) -> bool:
+        agent = self.engine.by_name.get(other)
+        if agent is None:  # a scripted partner: its notice comes if it arrives at this round
+            return self.partners is not None and self.partners.round_of(other, b.name) >= b.round
+        if agent.failed is not None:
+            return False
         for to, name, sender, round_ in self.fresh:
             if to == b.agent and name == b.name and sender == other and round_ >= b.round:
                 return True
@@ -84,6 +94,15 @@ class Team:
             return False
         theirs = [w for w in self.waiting if w.agent == other and w.name == b.name]
         return not theirs or any(b.agent in w.members for w in theirs)
+
+
+class Partners(Protocol):
+    """Team mates a world scripts (a behaviour test's): they take part in barriers, nothing else."""
+
+    def names(self) -> Sequence[str]: ...
+
+    def round_of(self, partner: str, name: str) -> int:
+        """The last round of barrier `name` this partner reaches in the run."""
 
 
 class Barrier:

@@ -12,6 +12,7 @@ from typing import Any
 from hfsm.runtime.agent import Agent, AgentResult, Event, Frame, Region
 from hfsm.runtime.barrier import Team
 from hfsm.runtime.program import span_ticks
+from hfsm.runtime.records import records_for
 from hfsm.runtime.states import RState
 from hfsm.trace import TraceSink
 from hfsm.world import World
@@ -34,9 +35,10 @@ class Core:
         for agent in agents:
             agent.clock = self
         self.by_name = {a.name: a for a in agents}
-        self.world = world
+        self.world: World = world
         self.dt = dt
         self.trace = trace
+        self.records = records_for(trace, self)
         self.tick = 0
         self._time = (0, 0.0)  # (tick, seconds) of the last time asked for
         self.running = len(agents)  # agents whose top machine has not ended
@@ -60,8 +62,8 @@ class Core:
         return ticks
 
     def emit(self, agent: Agent, path: list[str], kind: str, **extra: Any) -> None:
-        if self.trace is not None:
-            self.trace.write({"t": self.time, "agent": agent.name, "path": path, "kind": kind, **extra})
+        if self.records is not None:
+            self.records.write(agent, path, kind, **extra)
 
     def _leave(self, frame: Frame, event: str) -> None:
         """The trace's `exit` of a frame's current state, and the statistics of its behaviour."""

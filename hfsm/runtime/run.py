@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import sys
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -36,6 +36,7 @@ class RunOptions:
     seed: int = 0
     max_time: float = 3600.0
     failures: Sequence[Failure] = ()
+    agent_params: Mapping[str, dict[str, Any]] = field(default_factory=dict)  # an agent's own params
 
 
 def run(program: Program, world: World, options: RunOptions, trace: TraceSink | None = None) -> RunResult:
@@ -64,7 +65,7 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
         for agent in agents:
             if agent.result is None:
                 agent.entries = 0
-                engine.start(agent, top, options.params)
+                engine.start(agent, top, options.agent_params.get(agent.name, options.params))
         while engine.running:
             following = _next_tick(engine, failures) if world.static else engine.tick + 1
             if following is None or following > last:

@@ -13,12 +13,12 @@ from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import Finding, UserError
 from hfsm.library import PROJECT_MACHINES, SUFFIXES, Library, shown
 from hfsm.load import Loaded, load
-from hfsm.model import Machine
 from hfsm.names import did_you_mean
 from hfsm.registry import Registry
-from hfsm.spec import BehaviourSpec, coerce, type_ok
+from hfsm.spec import BehaviourSpec
 from hfsm.testing.calls import callees, reachable
 from hfsm.testing.check_expect import check_expect
+from hfsm.testing.check_team import team_params, team_partners
 from hfsm.testing.model import ByAgent, Case, FailAt, StandIn, Step, TestFile
 from hfsm.testing.plan import CasePlan, StandInPlan
 from hfsm.yamlio import Document, Path_, read_mapping
@@ -81,7 +81,8 @@ class _FileChecker:
         agents = agents or ["robot"]
         if len(set(agents)) != len(agents):
             self.error(agents_at, "T301", "agent names must be distinct")
-        params = self._params(top.model, top.name, case, at)
+        params, agent_params = team_params(self, top.model, top.name, case, at, list(agents))
+        partners = team_partners(self, case, at, list(agents))
         stand_ins = self._stand_ins(loaded, case, at, set(agents))
         pruned = self._world_free(loaded, top.name, stand_ins, machine_at)
         inputs, messages, fail = self._script(case, at, set(agents))
@@ -98,6 +99,7 @@ class _FileChecker:
             top=top.name,
             agents=list(agents),
             params=params,
+            agent_params=agent_params,
             seed=self._pick(case, "seed", at)[0] or 0,
             dt=self._pick(case, "dt", at)[0] or DEFAULT_DT,
             max_time=self._pick(case, "max_time", at)[0] or DEFAULT_MAX_TIME,
@@ -105,6 +107,7 @@ class _FileChecker:
             inputs=inputs,
             messages=messages,
             fail=fail,
+            partners=partners,
             expect=expect,
             expect_path=(*at, "expect"),
             pruned=pruned,
@@ -147,35 +150,6 @@ class _FileChecker:
                 f"no machine '{machine}' in {', '.join(map(str, map(shown, library.search)))}{hint}",
             )
         return found
-
-    def _params(self, model: Machine, top: str, case: Case, at: Path_) -> dict[str, Any]:
-        given = {**(self.file.params or {}), **(case.params or {})}
-        params: dict[str, Any] = {}
-        for key, value in given.items():
-            where = (*at, "params", key) if case.params and key in case.params else ("params", key)
-            param = model.params.get(key)
-            if param is None:
-                hint = (
-                    did_you_mean(key, model.params)
-                    or f" ('{top}' takes: {', '.join(model.params) or 'nothing'})"
-                )
-                self.error(where, "T303", f"'{top}' has no param '{key}'{hint}", key=True)
-            elif not type_ok(value, param.type):
-                self.error(where, "T303", f"param '{key}' of '{top}' takes {param.type}, not {value!r}")
-            else:
-                params[key] = coerce(value, param.type)
-        for key, param in model.params.items():
-            if key not in given:
-                if param.required:
-                    self.error(
-                        at,
-                        "T303",
-                        f"'{top}' needs param '{key}' ({param.type}): give it in `params:`",
-                        key=True,
-                    )
-                else:
-                    params[key] = param.default
-        return params
 
     # --- stand-ins -----------------------------------------------------------------------------
 

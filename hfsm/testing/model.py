@@ -68,6 +68,15 @@ class FailAt(Strict):
     reason: str = "scripted by the test"
 
 
+class PartnerAt(Strict):
+    """A scripted team mate outside the test that arrives at barrier `barrier` at time `at` (SPEC 14):
+    from then on it sends its notice to every agent of the test, as an agent waiting there does."""
+
+    agent: Name = Field(description="its name: not an agent of the test")
+    barrier: str = Field(min_length=1, description="the barrier's name")
+    at: Seconds = 0
+
+
 class TimeRange(Strict):
     min: Seconds | None = None
     max: Seconds | None = None
@@ -128,6 +137,9 @@ class Setup(Strict):
     lib: list[str] | None = Field(default=None, description="more machine folders, from this file's")
     agents: list[Name] | None = Field(default=None, min_length=1, description="default: [robot]")
     params: dict[Name, Any] | None = None
+    agent_params: dict[Name, dict[Name, Any]] | None = Field(
+        default=None, description="agent -> params for that agent alone, over `params`"
+    )
     seed: int | None = None
     dt: Annotated[float, Field(gt=0, allow_inf_nan=False)] | None = None
     max_time: Annotated[float, Field(gt=0, allow_inf_nan=False)] | None = None
@@ -135,6 +147,9 @@ class Setup(Strict):
     inputs: list[InputsAt] | None = None
     messages: list[MessageIn] | None = None
     fail: list[FailAt] | None = Field(default=None, description="agents that fail, and when")
+    partners: list[PartnerAt] | None = Field(
+        default=None, description="scripted team mates that arrive at barriers (each entry one round)"
+    )
 
 
 class Case(Setup):

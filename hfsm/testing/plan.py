@@ -8,7 +8,7 @@ from typing import Any
 from hfsm.load import Loaded
 from hfsm.registry import Registry
 from hfsm.spec import BehaviourSpec
-from hfsm.testing.model import Expect, FailAt, InputsAt, MessageIn, Step
+from hfsm.testing.model import Expect, FailAt, InputsAt, MessageIn, PartnerAt, Step
 from hfsm.yamlio import Document, Path_
 
 
@@ -34,6 +34,7 @@ class CasePlan:
     top: str
     agents: list[str]
     params: dict[str, Any]
+    agent_params: dict[str, dict[str, Any]]  # agent -> its params, for those `agent_params` names
     seed: int
     dt: float
     max_time: float
@@ -41,6 +42,7 @@ class CasePlan:
     inputs: list[tuple[InputsAt, Path_]]
     messages: list[tuple[MessageIn, Path_]]
     fail: list[FailAt]
+    partners: list[PartnerAt]
     expect: Expect
     expect_path: Path_
     pruned: set[str] = field(default_factory=set)  # machines not run: only stand-ins call them

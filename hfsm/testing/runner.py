@@ -30,10 +30,12 @@ def run_case(plan: CasePlan) -> CaseResult:
     program, calls = program_for(plan)
     inputs = [entry for entry, _ in plan.inputs]
     messages = [message for message, _ in plan.messages]
-    world = ScriptedWorld(inputs, messages, plan.agents, plan.dt)
+    world = ScriptedWorld(inputs, messages, plan.agents, plan.dt, plan.partners)
     trace = ListTrace()
     failing = [Failure(f.agent, f.at, f.reason) for f in plan.fail]
-    options = RunOptions(plan.top, plan.agents, plan.params, plan.seed, plan.max_time, failing)
+    options = RunOptions(
+        plan.top, plan.agents, plan.params, plan.seed, plan.max_time, failing, plan.agent_params
+    )
     try:
         result = run(program, world, options, trace)
     finally:

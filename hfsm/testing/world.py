@@ -7,7 +7,8 @@ from typing import Any
 
 from hfsm.primitive import Message
 from hfsm.runtime.program import span_ticks
-from hfsm.testing.model import InputsAt, MessageIn
+from hfsm.testing.model import InputsAt, MessageIn, PartnerAt
+from hfsm.testing.partners import ScriptedPartners
 from hfsm.world import InputSpec, NullWorld
 
 _TYPES = {bool: "bool", int: "int", float: "float", str: "str", list: "list", dict: "dict"}
@@ -23,10 +24,16 @@ class ScriptedWorld(NullWorld):
     name = "test"
 
     def __init__(
-        self, inputs: Sequence[InputsAt], messages: Sequence[MessageIn], agents: Sequence[str], dt: float
+        self,
+        inputs: Sequence[InputsAt],
+        messages: Sequence[MessageIn],
+        agents: Sequence[str],
+        dt: float,
+        partners: Sequence[PartnerAt] = (),
     ) -> None:
         super().__init__()
         self.dt = dt
+        self.partners = ScriptedPartners(partners, agents, dt) if partners else None
         # Entries in time order; among equal times, the file's order: the last that applies wins.
         self._inputs = sorted(inputs, key=lambda e: e.at)
         self._declared: dict[str, InputSpec] = {}
@@ -59,8 +66,14 @@ class ScriptedWorld(NullWorld):
             raise KeyError(f"the test gives no value before t={now:g} s")
         return value
 
+    def post(self, message: Message) -> None:
+        if self.partners is None or message.to not in self.partners.names():
+            super().post(message)  # a partner's notices are scripted: what is sent to it is not needed
+
     def collect(self, tick: int) -> list[Message]:
         due = super().collect(tick)
+        if self.partners is not None:
+            due = self.partners.notices(tick) + due
         if self._scripted and self._scripted[0][0] <= tick:
             scripted = [m for t, _, m in self._scripted if t <= tick]
             self._scripted = [item for item in self._scripted if item[0] > tick]

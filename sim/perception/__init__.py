@@ -1,10 +1,14 @@
-"""Perception: pure functions over a robot's RGB images (H x W x 3 uint8) and its own
-camera model (`sim.CameraModel`: intrinsics, mounting, head joints). No pybullet, no truth.
+"""Perception: pure functions over a robot's RGB images (H x W x 3 uint8) and its own camera
+model. No pybullet, no truth.
 
-Modules: `config` (PerceptionConfig, every threshold), `blobs` (table/robot blobs, ground
-distance and bearing), `corners` (the V of Figure 5, long side test), `edges` (floor-wall edge,
-table top edge, Figure 6), `down` (the down camera: blue share, near edge
-angle and distance for aligning).
+One camera model and one projection (`camera`: intrinsics, pose from the head joints and
+odometry, `CameraModel.to_plane` from image to floor); pixel classes by colour (`colour`);
+small detectors on them: `blobs` (table and robot blobs, ground distance and bearing, the
+paper's Figure 5 tests), `table_rect` (the table top as a rectangle on the floor plan),
+`edge` (the near edge seen looking down), `reach` (how far the table reaches to one side),
+`walls` (the floor-wall line), `tables` (every table in view told apart, in the odometry
+frame, and the one a task names picked by where it is); `floor` (lines on the floor plan);
+`config` (every threshold).
 """
 
 from sim.perception.blobs import (
@@ -14,7 +18,8 @@ from sim.perception.blobs import (
     GroundEstimate,
     blob_from_mask,
     blob_ground,
-    colour_mask,
+    clean_mask,
+    components,
     find_robot,
     find_robots,
     find_table,
@@ -24,57 +29,59 @@ from sim.perception.blobs import (
     is_near,
     pixel_bearing,
     table_distance,
-    table_mask,
-    to_hsv,
 )
-from sim.perception.config import DEFAULT_CONFIG, Camera, PerceptionConfig
-from sim.perception.corners import NO_CORNER, NO_EDGE, Edge, TableCorner, find_corner, top_face_mask
-from sim.perception.down import DownView, down_view
-from sim.perception.edges import (
-    NO_FLOOR_WALL,
-    NO_MEET,
-    FloorWall,
-    WallMeet,
-    floor_wall_edge,
-    table_top_outline,
-    wall_meet,
-)
+from sim.perception.camera import CameraModel
+from sim.perception.colour import colour_mask, floor_mask, table_mask, to_hsv, top_face, wall_mask
+from sim.perception.config import DEFAULT_CONFIG, PerceptionConfig
+from sim.perception.edge import NO_EDGE, NearEdge, near_edge
+from sim.perception.reach import NO_EXTENT, SideExtent, side_extent
+from sim.perception.table_rect import NO_RECT, TableRect, fit_rect, outline_points, table_rect
+from sim.perception.tables import TableSeen, pick_table, see_tables
+from sim.perception.walls import NO_WALL, WallSeen, floor_wall_line, wall_to_side
 
 __all__ = [
     "DEFAULT_CONFIG",
     "NO_BLOB",
-    "NO_CORNER",
     "NO_EDGE",
-    "NO_FLOOR_WALL",
+    "NO_EXTENT",
     "NO_GROUND",
-    "NO_MEET",
+    "NO_RECT",
+    "NO_WALL",
     "Blob",
-    "Camera",
-    "DownView",
-    "Edge",
-    "FloorWall",
+    "CameraModel",
     "GroundEstimate",
+    "NearEdge",
     "PerceptionConfig",
-    "TableCorner",
-    "WallMeet",
+    "SideExtent",
+    "TableRect",
+    "TableSeen",
+    "WallSeen",
     "blob_from_mask",
     "blob_ground",
+    "clean_mask",
     "colour_mask",
-    "down_view",
-    "find_corner",
+    "components",
     "find_robot",
     "find_robots",
     "find_table",
-    "floor_wall_edge",
+    "fit_rect",
+    "floor_mask",
+    "floor_wall_line",
     "ground_estimate",
     "in_centre_band",
     "is_below",
     "is_near",
+    "near_edge",
+    "outline_points",
+    "pick_table",
     "pixel_bearing",
+    "see_tables",
+    "side_extent",
     "table_distance",
     "table_mask",
-    "table_top_outline",
+    "table_rect",
     "to_hsv",
-    "top_face_mask",
-    "wall_meet",
+    "top_face",
+    "wall_mask",
+    "wall_to_side",
 ]

@@ -8,7 +8,9 @@ from dataclasses import dataclass
 import cv2
 import numpy as np
 
-from sim.perception.config import DEFAULT_CONFIG, RGB, Camera, PerceptionConfig
+from sim.perception.camera import CameraModel
+from sim.perception.colour import colour_mask, table_mask, to_hsv
+from sim.perception.config import DEFAULT_CONFIG, RGB, PerceptionConfig
 
 # Pixel coordinates are continuous as in sim.camera: pixel (row j, column i) covers
 # u in [i, i+1), v in [j, j+1). Rows and columns below are integer pixel indices.
@@ -69,49 +71,24 @@ class GroundEstimate:
 NO_GROUND = GroundEstimate(found=False)
 
 
-def to_hsv(image: np.ndarray) -> np.ndarray:
-    """RGB uint8 image to OpenCV HSV (hue 0..179)."""
-    return np.asarray(cv2.cvtColor(image, cv2.COLOR_RGB2HSV))
-
-
-def colour_hue(colour: RGB) -> int:
-    """OpenCV hue (0..179) of an RGB colour given in 0..1."""
-    pixel = np.array([[[round(255 * c) for c in colour]]], dtype=np.uint8)
-    return int(to_hsv(pixel)[0, 0, 0])
-
-
-def colour_mask(hsv: np.ndarray, colour: RGB, cfg: PerceptionConfig = DEFAULT_CONFIG) -> np.ndarray:
-    """Pixels whose hue is within `hue_tolerance` of the colour's and which are saturated and
-    bright enough (shading changes value, not hue). Boolean H x W."""
-    hue_ok = hue_lut(colour_hue(colour), cfg.hue_tolerance)[hsv[..., 0]]
-    sv = cv2.inRange(hsv, (0, cfg.min_saturation, cfg.min_value), (255, 255, 255))
-    return np.asarray(hue_ok & (sv > 0))
-
-
-def hue_lut(hue: int, tolerance: int) -> np.ndarray:
-    """Boolean table over OpenCV hues 0..255: within `tolerance` of `hue` (circular, 180)."""
-    diff = np.abs(np.arange(256) - hue)
-    return np.asarray(np.minimum(diff, 180 - diff % 180) <= tolerance)
-
-
-def table_mask(image: np.ndarray, cfg: PerceptionConfig = DEFAULT_CONFIG) -> np.ndarray:
-    """Boolean mask of the table's (blue) pixels."""
-    return colour_mask(to_hsv(image), cfg.table_colour, cfg)
-
-
-def clean_mask(mask: np.ndarray, cfg: PerceptionConfig) -> tuple[np.ndarray, int]:
-    """Drop components below `min_blob_fraction` of the image; the union of the rest."""
+def components(mask: np.ndarray, cfg: PerceptionConfig = DEFAULT_CONFIG
+               ) -> tuple[np.ndarray, np.ndarray]:
+    """Label image of the mask's 8-connected components and the labels (1..) of those that
+    are not noise (at least `min_blob_fraction` of the image), after the optional opening."""
     m = np.asarray(mask, dtype=np.uint8)
-    if not cv2.countNonZero(m):
-        return m.astype(bool), 0
     if cfg.open_kernel > 1:
         kernel = np.ones((cfg.open_kernel, cfg.open_kernel), np.uint8)
         m = np.asarray(cv2.morphologyEx(m, cv2.MORPH_OPEN, kernel), dtype=np.uint8)
-    n, labels, stats, _ = cv2.connectedComponentsWithStats(m, connectivity=8)
+    if not cv2.countNonZero(m):
+        return np.zeros(m.shape, np.int32), np.zeros(0, np.int64)
+    _, labels, stats, _ = cv2.connectedComponentsWithStats(m, connectivity=8)
     min_area = max(1, math.ceil(cfg.min_blob_fraction * mask.size))
-    keep = np.nonzero(stats[1:, cv2.CC_STAT_AREA] >= min_area)[0] + 1
-    if keep.size == n - 1:
-        return m.astype(bool), int(keep.size)
+    return labels, np.nonzero(stats[1:, cv2.CC_STAT_AREA] >= min_area)[0] + 1
+
+
+def clean_mask(mask: np.ndarray, cfg: PerceptionConfig = DEFAULT_CONFIG) -> tuple[np.ndarray, int]:
+    """The union of the mask's components that are not noise, and how many they are."""
+    labels, keep = components(mask, cfg)
     return np.isin(labels, keep), int(keep.size)
 
 
@@ -150,13 +127,13 @@ def find_robots(image: np.ndarray, cfg: PerceptionConfig = DEFAULT_CONFIG) -> tu
     return tuple(blob_from_mask(colour_mask(hsv, c, cfg), cfg) for c in cfg.robot_colours)
 
 
-def pixel_bearing(camera: Camera, u: float, v: float) -> float:
+def pixel_bearing(camera: CameraModel, u: float, v: float) -> float:
     """Horizontal direction (rad, left +, body frame) of the ray through (u, v)."""
     d = camera.ray(u, v)
     return math.atan2(float(d[1]), float(d[0]))
 
 
-def ground_estimate(camera: Camera, u: float, v: float, plane_z: float = 0.0,
+def ground_estimate(camera: CameraModel, u: float, v: float, plane_z: float = 0.0,
                     clipped: bool = False) -> GroundEstimate:
     """Body-frame point where the ray through (u, v) meets the plane z = plane_z."""
     point = camera.ground_point(u, v, plane_z)
@@ -167,7 +144,7 @@ def ground_estimate(camera: Camera, u: float, v: float, plane_z: float = 0.0,
                           bearing=math.atan2(y, x), pixel=(u, v), clipped=clipped)
 
 
-def blob_ground(blob: Blob, camera: Camera, plane_z: float = 0.0) -> GroundEstimate:
+def blob_ground(blob: Blob, camera: CameraModel, plane_z: float = 0.0) -> GroundEstimate:
     """Distance and bearing to the blob's lowest pixel assumed on the floor (or on plane_z):
     the lower edge of the lowest row (v = lowest_row + 1) at the mean u of that row."""
     if not blob.found:
@@ -176,7 +153,7 @@ def blob_ground(blob: Blob, camera: Camera, plane_z: float = 0.0) -> GroundEstim
                            clipped=blob.touches_bottom)
 
 
-def table_distance(image: np.ndarray, camera: Camera,
+def table_distance(image: np.ndarray, camera: CameraModel,
                    cfg: PerceptionConfig = DEFAULT_CONFIG) -> tuple[Blob, GroundEstimate]:
     """The table blob and the ground distance/bearing to its lowest pixel (its nearest foot
     when the feet are in view; see GroundEstimate.clipped)."""

@@ -1,4 +1,4 @@
-"""Perception parameters (every threshold in one frozen dataclass) and the camera protocol.
+"""Perception parameters: every threshold in one frozen dataclass.
 
 Colours are RGB triples in 0..1 as in sim/profile.py; they are parameters, so the
 behaviours (or a test) can pass other colours without touching the functions.
@@ -7,39 +7,10 @@ behaviours (or a test) can pass other colours without touching the functions.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Protocol
-
-import numpy as np
 
 from sim.profile import FLOOR_COLOUR, ROBOT_COLOURS, TABLE_COLOUR, WALL_COLOUR
 
 RGB = tuple[float, float, float]
-
-
-class Camera(Protocol):
-    """What perception needs of `sim.CameraModel` (a robot's knowledge of its own camera)."""
-
-    @property
-    def width(self) -> int: ...
-    @property
-    def height(self) -> int: ...
-    @property
-    def cx(self) -> float: ...
-    @property
-    def cy(self) -> float: ...
-    @property
-    def fx(self) -> float: ...
-    @property
-    def fy(self) -> float: ...
-    @property
-    def position(self) -> tuple[float, float, float]: ...
-
-    @property
-    def rotation(self) -> np.ndarray: ...
-
-    def project(self, point: tuple[float, float, float]) -> tuple[float, float] | None: ...
-    def ray(self, u: float, v: float) -> np.ndarray: ...
-    def ground_point(self, u: float, v: float, plane_z: float = 0.0) -> tuple[float, float] | None: ...
 
 
 @dataclass(frozen=True)
@@ -68,21 +39,12 @@ class PerceptionConfig:
     # geometry priors (what the robots know of the table they move)
     table_top_height: float = 0.33     # top surface above the floor (m)
     table_edge_height: float = 0.30    # underside of the top: the lower edge of its rim (m)
-    # corners and edges
-    top_face_min_value: int = 200      # the lit top face renders v ~220, side faces and legs
-                                       # 148..178 (sim light: ambient 0.65, diffuse 0.35, overhead)
-    fit_margin_fraction: float = 0.015  # outline columns left out next to a V's vertex and ends
-    min_edge_px_fraction: float = 0.04  # shortest edge segment worth fitting (of image width)
-    v_min_slope: float = 0.05          # |dv/du| each arm of the V must exceed
-    meet_tolerance_px: float = 2.0     # Figure 6: table edge within this of the floor-wall line
+    # edges and tables
+    min_edge_px_fraction: float = 0.04  # fewest columns (of image width) for a near-edge fit
     wall_min_run: int = 2              # wall pixels needed directly above a floor-wall boundary
-    down_min_fraction: float = 0.02    # least blue share of the down image for an edge fit
-    max_plane_points: int = 48         # outline points put through the camera model per fit
+    table_gap: float = 0.15            # top-face pieces nearer than this (m) are one table...
+    table_max_size: tuple[float, float] = (1.2, 0.8)  # ...if together no longer/wider (m)
 
 
 DEFAULT_CONFIG = PerceptionConfig()
 
-
-def scaled(fraction: float, size: int, minimum: int = 1) -> int:
-    """A pixel length given as a fraction of an image dimension."""
-    return max(minimum, round(fraction * size))

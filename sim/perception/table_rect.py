@@ -18,8 +18,9 @@ from dataclasses import dataclass
 import cv2
 import numpy as np
 
-from sim.perception.blobs import table_mask, to_hsv
-from sim.perception.config import DEFAULT_CONFIG, Camera, PerceptionConfig
+from sim.perception.camera import CameraModel
+from sim.perception.colour import top_face
+from sim.perception.config import DEFAULT_CONFIG, PerceptionConfig
 
 
 @dataclass(frozen=True)
@@ -48,33 +49,30 @@ class TableRect:
 NO_RECT = TableRect(found=False)
 
 
-def top_face(image: np.ndarray, value_ratio: float = 0.9,
-             cfg: PerceptionConfig = DEFAULT_CONFIG) -> np.ndarray:
-    """Boolean mask of the table's top face: blue pixels near the blob's brightest value."""
-    blue = table_mask(image, cfg)
-    if not blue.any():
-        return blue
-    value = to_hsv(image)[..., 2]
-    return np.asarray(blue & (value >= value_ratio * float(value[blue].max())))
-
-
-def outline_points(image: np.ndarray, camera: Camera, value_ratio: float = 0.9,
-                   cfg: PerceptionConfig = DEFAULT_CONFIG) -> np.ndarray:
-    """Body-frame (x, y) points of the top face's visible outline, N x 2."""
+def outline_pieces(image: np.ndarray, camera: CameraModel, value_ratio: float = 0.9,
+                   cfg: PerceptionConfig = DEFAULT_CONFIG) -> list[tuple[np.ndarray, bool]]:
+    """One piece per top-face contour that is not noise: its visible outline on the plane of
+    the top (body frame, N x 2) and whether the contour ran off the image (dropped pixels)."""
     mask = top_face(image, value_ratio, cfg).astype(np.uint8)
     min_area = max(1, math.ceil(cfg.min_blob_fraction * mask.size))
     contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
     h, w = mask.shape
-    points: list[tuple[float, float]] = []
+    pieces = []
     for contour in contours:
         if cv2.contourArea(contour) < min_area:
             continue
-        for u, v in contour.reshape(-1, 2):
-            if 0 < u < w - 1 and 0 < v < h - 1:
-                ground = camera.ground_point(u + 0.5, v + 0.5, cfg.table_top_height)
-                if ground is not None:
-                    points.append(ground)
-    return np.asarray(points, dtype=float).reshape(-1, 2)
+        us, vs = contour.reshape(-1, 2).T
+        inside = (us > 0) & (us < w - 1) & (vs > 0) & (vs < h - 1)
+        points = camera.points_on_plane(us[inside] + 0.5, vs[inside] + 0.5, cfg.table_top_height)
+        pieces.append((points, not bool(inside.all())))
+    return pieces
+
+
+def outline_points(image: np.ndarray, camera: CameraModel, value_ratio: float = 0.9,
+                   cfg: PerceptionConfig = DEFAULT_CONFIG) -> np.ndarray:
+    """Body-frame (x, y) points of the visible outline of every top face in view, N x 2."""
+    pieces = [points for points, _ in outline_pieces(image, camera, value_ratio, cfg)]
+    return np.concatenate(pieces) if pieces else np.zeros((0, 2))
 
 
 def fit_rect(points: np.ndarray | Sequence[np.ndarray], min_points: int = 8) -> TableRect:
@@ -89,7 +87,7 @@ def fit_rect(points: np.ndarray | Sequence[np.ndarray], min_points: int = 8) -> 
                      len(pts))
 
 
-def table_rect(image: np.ndarray, camera: Camera, value_ratio: float = 0.9,
+def table_rect(image: np.ndarray, camera: CameraModel, value_ratio: float = 0.9,
                cfg: PerceptionConfig = DEFAULT_CONFIG) -> TableRect:
     """The table top from a single view (a partial view gives a smaller rectangle)."""
     return fit_rect(outline_points(image, camera, value_ratio, cfg))

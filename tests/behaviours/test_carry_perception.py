@@ -1,4 +1,4 @@
-"""sim.perception.carry against ground truth: the near edge, the table's reach to each side,
+"""sim.perception (edge, reach, walls) against ground truth: the near edge, the table's reach to each side,
 the wall to each side, from a robot standing at the table as the carry leaves it."""
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ import pytest
 from carry_scene import GRIP_Y, TABLE_X, at_table
 
 from sim import World, scenario_from_dict
-from sim.perception.carry import near_edge, side_extent, wall_to_side
+from sim.perception import near_edge, side_extent, wall_to_side
 
 # (along m, away m, turned deg) from square at grip depth
 POSES = [(0.0, 0.0, 0.0), (0.1, 0.02, 7.0), (-0.1, -0.01, -7.0), (0.05, 0.03, 15.0)]
@@ -60,6 +60,20 @@ def test_wall_to_the_right(table_x: float) -> None:
         seen = wall_to_side(robot.image("forward"), robot.camera_model("forward"), "right")
         assert seen.found
         assert seen.distance == pytest.approx(2.5 - table_x, abs=0.03)
+
+
+@pytest.mark.parametrize("turned", [-12.0, 12.0])
+def test_an_oblique_wall_is_seen_as_a_line(turned: float) -> None:
+    """Turned `turned` degrees, r1 sees the wall to its right (the room's +x wall) at its
+    distance, its normal off the body's right axis by as much."""
+    with World(scenario_from_dict(at_table((0.0, 0.0, turned), None, table_x=1.2)), 0) as world:
+        look(world, -2.0, 0.5)
+        robot = world.robots["r1"]
+        seen = wall_to_side(robot.image("forward"), robot.camera_model("forward"), "right")
+        x = world.truth.robot_pose("r1")[0]
+        assert seen.found
+        assert seen.distance == pytest.approx(2.5 - x, abs=0.03)
+        assert math.degrees(seen.normal) == pytest.approx(-90.0 - turned, abs=2.0)
 
 
 def test_no_table_no_edge() -> None:

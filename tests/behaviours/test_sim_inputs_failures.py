@@ -8,8 +8,7 @@ from pathlib import Path
 
 import pytest
 from carry_scene import DATA, at_table, run_in_scene
-
-from hfsm.cli.run import main
+from helpers import hfsm_run
 
 Machine = Callable[[str, str], Path]
 
@@ -34,6 +33,7 @@ SENSE = """
           seen:
             table: "${in.table_in_view}"
             bearing: "${in.table_bearing}"
+            tables: "${in.tables_in_view}"
             partner: "${in.partner_in_view}"
             pose: "${in.pose}"
             battery: "${in.battery}"
@@ -52,25 +52,23 @@ HEAR = """
 """
 
 
-def run(capsys: pytest.CaptureFixture[str], *argv: object) -> tuple[int, str, str]:
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
 def test_inputs_are_what_each_robot_senses(
     machine: Machine, capsys: pytest.CaptureFixture[str], tmp_path: Path
 ) -> None:
     scene = tmp_path / "scene.yaml"
     scene.write_text(SCENE)
     argv = (machine("sense", SENSE), "--world", "sim", "--scenario", scene, "--json", "--no-video", "--out", tmp_path, "--quiet")
-    code, out, _ = run(capsys, *argv)
+    code, out, _ = hfsm_run(capsys, *argv)
     agents = json.loads(out)["agents"]
     assert code == 0
     r1, r2 = agents["r1"]["outputs"]["seen"], agents["r2"]["outputs"]["seen"]
     assert (r1["table"], r1["partner"]) == (True, False)
     assert abs(r1["bearing"]) < 3.0
     assert (r2["table"], r2["bearing"], r2["partner"]) == (False, None, True)
+    (top,) = r1["tables"]  # 1.5 m ahead, its long axis along r1's view, 0.8 x 0.5 m
+    assert (top["x"], top["y"], top["heading"]) == pytest.approx((1.5, 0.0, 0.0), abs=0.08)
+    assert (top["length"], top["width"]) == pytest.approx((0.8, 0.5), abs=0.1)
+    assert r2["tables"] == []
     for seen in (r1, r2):
         assert seen["pose"] == {"x": 0.0, "y": 0.0, "yaw": 0.0}  # standing still: odometry at its start
         assert seen["battery"] == pytest.approx(0.49)
@@ -83,21 +81,21 @@ def test_radio_delay_is_what_the_latest_notice_took(
 ) -> None:
     argv = (machine("hear", HEAR), "--world", "sim", "--json", "--no-video", "--out", tmp_path, "--quiet",
             "--radio-latency", "0.7")
-    code, out, _ = run(capsys, *argv)
+    code, out, _ = hfsm_run(capsys, *argv)
     agents = json.loads(out)["agents"]
     assert code == 0
     assert [agents[r]["outputs"] for r in ("r1", "r2")] == [{"before": 0.0, "after": 0.7}] * 2
 
 
 def test_check_knows_the_sim_inputs(machine: Machine, capsys: pytest.CaptureFixture[str]) -> None:
-    code, _, err = run(capsys, machine("sense", SENSE), "--world", "sim", "--check")
+    code, _, err = hfsm_run(capsys, machine("sense", SENSE), "--world", "sim", "--check")
     assert code == 0, err
 
 
 def test_fail_in_the_sim_world(machine: Machine, capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
     pause = machine("pause", "outcomes: [done]\nstates:\n  w: {do: wait, with: {seconds: 2}, on: {done: done}}\n")
     argv = (pause, "--world", "sim", "--json", "--no-video", "--out", tmp_path, "--fail", "r2@1", "--quiet")
-    code, out, _ = run(capsys, *argv)
+    code, out, _ = hfsm_run(capsys, *argv)
     agents = json.loads(out)["agents"]
     assert code == 0
     assert agents["r2"] == {"outcome": None, "outputs": {}, "time": 1.0, "failed": "--fail"}
@@ -108,7 +106,7 @@ def test_an_empty_battery_fails_the_robot(machine: Machine, capsys: pytest.Captu
     scene = tmp_path / "scene.yaml"
     scene.write_text(SCENE.replace("idle: 0.01", "idle: 0.25"))
     pause = machine("pause", "outcomes: [done]\nstates:\n  w: {do: wait, with: {seconds: 3}, on: {done: done}}\n")
-    code, out, _ = run(capsys, pause, "--scenario", scene, "--json", "--no-video", "--out", tmp_path, "--world", "sim")
+    code, out, _ = hfsm_run(capsys, pause, "--scenario", scene, "--json", "--no-video", "--out", tmp_path, "--world", "sim")
     agents = json.loads(out)["agents"]
     assert code == 1 and json.loads(out)["error"] == "every agent failed"
     assert {n: (a["time"], a["failed"]) for n, a in agents.items()} == {
@@ -135,10 +133,10 @@ def test_scenario_failures_are_checked_at_their_positions(
 ) -> None:
     scene = tmp_path / "scene.yaml"
     scene.write_text(SCENE + "failures:\n  - {robot: r3, at: 5}\n")
-    code, _, err = run(capsys, machine("sense", SENSE), "--world", "sim", "--scenario", scene)
+    code, _, err = hfsm_run(capsys, machine("sense", SENSE), "--world", "sim", "--scenario", scene)
     assert code == 2
     assert "scene.yaml:9:3: error[E200]: 'failures': [0] names no robot of the scenario (r1, r2)" in err
     scene.write_text(SCENE + "failures:\n  - {robot: r2, at: -5, why: x}\n")
-    code, _, err = run(capsys, machine("sense", SENSE), "--world", "sim", "--scenario", scene)
+    code, _, err = hfsm_run(capsys, machine("sense", SENSE), "--world", "sim", "--scenario", scene)
     assert "scene.yaml:9:21: error[E200]: 'at': Input should be greater than or equal to 0" in err
     assert "scene.yaml:9:25: error[E200]: unknown key 'why'" in err

@@ -8,9 +8,9 @@ from collections.abc import Callable
 from pathlib import Path
 
 import pytest
+from helpers import hfsm_run
 
 from behaviours.tararc.formulas import EnergyModel, energy
-from hfsm.cli.run import main
 from sim.battery import Battery
 from sim.specs import Eq5Battery
 
@@ -43,18 +43,12 @@ failures:
 """
 
 
-def run(capsys: pytest.CaptureFixture[str], *argv: object) -> tuple[int, str, str]:
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
 def test_light_robots_drive_where_go_to_sends_them(
     machine: Machine, capsys: pytest.CaptureFixture[str], tmp_path: Path
 ) -> None:
     argv = (machine("drive", DRIVE), "--world", "sim", "--scenario", "alloc_3_tasks", "--json", "--no-video",
             "--out", tmp_path, "--quiet")
-    code, out, err = run(capsys, *argv)
+    code, out, err = hfsm_run(capsys, *argv)
     assert code == 0, err
     agents = json.loads(out)["agents"]
     assert len(agents) == 10 and {a["outcome"] for a in agents.values()} == {"done"}
@@ -75,7 +69,7 @@ def test_team_scenario_errors_are_at_their_positions(
         "failures:\n"
         "  - {rate: 1.0, robots: [r1], why: x}\n"
     )
-    code, _, err = run(capsys, machine("pause", PAUSE), "--world", "sim", "--scenario", scene)
+    code, _, err = hfsm_run(capsys, machine("pause", PAUSE), "--world", "sim", "--scenario", scene)
     assert code == 2
     assert "scene.yaml:2:26: error[E200]: 'difficulty': Input should be less than 1" in err
     assert "scene.yaml:4:30: error[E200]: unknown key 'priorty'; did you mean 'priority'?" in err
@@ -88,8 +82,8 @@ def failures_of(capsys: pytest.CaptureFixture[str], pause: Path, scene: Path, ou
                 ) -> tuple[dict[str, object], bytes]:
     argv = (pause, "--world", "sim", "--scenario", scene, "--json", "--no-video", "--out", out, "--seed", seed,
             "--quiet")
-    code, stdout, err = run(capsys, *argv)
-    assert code in (0, 1), err
+    code, stdout, err = hfsm_run(capsys, *argv)
+    assert code == 0, err  # r6, not at risk, ends: the run does (every agent failing would exit 1)
     agents = json.loads(stdout)["agents"]
     return {n: (a["time"], a.get("failed")) for n, a in agents.items()}, (out / f"scene-seed{seed}.jsonl").read_bytes()
 
@@ -129,7 +123,7 @@ def test_sixteen_humanoids_run_headless(machine: Machine, capsys: pytest.Capture
                                         ) -> None:
     argv = (machine("pause", PAUSE), "--world", "sim", "--scenario", "team_16", "--json", "--no-video",
             "--out", tmp_path, "--quiet")
-    code, out, err = run(capsys, *argv)
+    code, out, err = hfsm_run(capsys, *argv)
     assert code == 0, err
     result = json.loads(out)
     assert len(result["agents"]) == 16 and {a["outcome"] for a in result["agents"].values()} == {"done"}

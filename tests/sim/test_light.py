@@ -83,6 +83,9 @@ def test_several_tables_in_the_poses_and_the_score(worlds: list[World]) -> None:
     assert not score["success"]
     empty = make(worlds, {"r1": {"x": 0.0, "y": 0.0, "body": "light"}})
     assert empty.score()["table_wall_distance"] is None and empty.poses()["tables"] == []
+    assert "targets" not in empty.poses()
+    aimed = make(worlds, {"r1": {"x": 0.0, "y": 0.0, "body": "light"}}, targets=[{"id": "t1", "x": 2.0, "y": 1.0}])
+    assert aimed.poses()["targets"] == [["t1", 2.0, 1.0]]
 
 
 def test_batteries_spend_on_messages_read(worlds: list[World]) -> None:

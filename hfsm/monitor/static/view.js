@@ -144,6 +144,12 @@ function drawRoom(replay, canvas, note) {
     ctx.fillRect(-length / 2 * scale, -width / 2 * scale, length * scale, width * scale); ctx.restore();
   }
   ctx.font = "11px sans-serif";
+  for (const [id, x, y] of pose.targets || []) {
+    const [cx, cy] = px(x, y);
+    ctx.strokeStyle = "#d22"; ctx.lineWidth = 2; ctx.beginPath();
+    ctx.moveTo(cx - 6, cy - 6); ctx.lineTo(cx + 6, cy + 6); ctx.moveTo(cx - 6, cy + 6); ctx.lineTo(cx + 6, cy - 6);
+    ctx.stroke(); ctx.lineWidth = 1; ctx.fillStyle = "#fdd"; ctx.fillText(id, cx + 8, cy + 12);
+  }
   for (const [name, [x, y, yaw]] of Object.entries(pose.robots || {})) {
     const [cx, cy] = px(x, y);
     const failed = replay.agent(name).failed;

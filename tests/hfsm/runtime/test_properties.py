@@ -12,6 +12,8 @@ from helpers import check_nesting, execute
 from hypothesis import given
 from hypothesis import strategies as st
 
+from hfsm.trace import JsonlTrace, TraceSink, encode
+
 OUTCOMES = ["done", "failure"]
 KINDS = ["wait", "wait_forever", "set", "log", "send", "wait_for", "choice", "child", "parallel", "retry"]
 
@@ -131,10 +133,12 @@ CHILD = {
 }
 
 
-def _run(tmp_path: Path, machine: dict[str, Any], max_time: float) -> tuple[Any, list[dict[str, Any]]]:
+def _run(
+    tmp_path: Path, machine: dict[str, Any], max_time: float, sink: TraceSink | None = None
+) -> tuple[Any, list[dict[str, Any]]]:
     (tmp_path / "child.yaml").write_text(yaml.safe_dump(CHILD))
     (tmp_path / "top.yaml").write_text(yaml.safe_dump(machine, sort_keys=False))
-    return execute(tmp_path / "top.yaml", agents=["a", "b"], max_time=max_time)
+    return execute(tmp_path / "top.yaml", agents=["a", "b"], max_time=max_time, sink=sink)
 
 
 @given(machines())
@@ -145,6 +149,17 @@ def test_never_crashes_and_every_enter_has_its_exit(
     result, records = _run(tmp_path_factory.mktemp("m"), machine, max_time=5)
     assert set(result.agents) == {"a", "b"}
     check_nesting(records)
+
+
+@given(machines())
+def test_the_jsonl_trace_is_the_records_encoded_one_by_one(
+    tmp_path_factory: Any, drawn: tuple[dict[str, Any], Any]
+) -> None:
+    """The JSONL sink gets the hot records as text (hfsm.runtime.records): the same bytes."""
+    folder = tmp_path_factory.mktemp("m")
+    _, records = _run(folder, drawn[0], max_time=5)
+    _run(folder, drawn[0], max_time=5, sink=JsonlTrace(folder / "t.jsonl"))
+    assert (folder / "t.jsonl").read_text(encoding="utf-8") == "".join(encode(r) + "\n" for r in records)
 
 
 @given(machines().filter(lambda drawn: drawn[1] is not None))
