@@ -27,6 +27,13 @@ SIM_INPUTS: Mapping[str, InputSpec] = {
             "metres on the floor to the table blob's lowest pixel (its nearest foot); null when the "
             "table is not in view or its lowest pixel is above the horizon",
         ),
+        InputSpec(
+            "tables_in_view",
+            "list",
+            "every table top in the forward image, told apart, nearest first: [{x, y: metres, the "
+            "top's centre in the frame of in.pose, heading: degrees of its long axis (-90..90], "
+            "length, width: metres, clipped: part of it out of view, so it may be larger}]",
+        ),
         InputSpec("partner_in_view", "bool", "another robot's colour is in the forward camera's image"),
         InputSpec("hand_give_left", "float", "metres: how far the load pulls the left hand off its posture"),
         InputSpec(

@@ -14,15 +14,15 @@ import numpy as np
 
 from sim import Robot
 from sim.light import LightRobot
-from sim.perception import Blob, blob_ground, find_robots, find_table, pixel_bearing
+from sim.perception import Blob, blob_ground, find_robots, find_table, pixel_bearing, see_tables
 
 
 def _degrees(radians: float) -> float:
     return round(math.degrees(radians), 6)
 
 
-LIGHT_BLIND = ("table_in_view", "table_bearing", "table_distance", "partner_in_view", "hand_give_left",
-               "hand_give_right")
+LIGHT_BLIND = ("table_in_view", "table_bearing", "table_distance", "tables_in_view", "partner_in_view",
+               "hand_give_left", "hand_give_right")
 
 
 class Senses:
@@ -48,6 +48,7 @@ class Senses:
             "table_in_view": lambda: self.table().found,
             "table_bearing": self.table_bearing,
             "table_distance": self.table_distance,
+            "tables_in_view": self.tables_in_view,
             "partner_in_view": self.partner_in_view,
             "hand_give_left": lambda: float(np.linalg.norm(robot.hand_load().left)),
             "hand_give_right": lambda: float(np.linalg.norm(robot.hand_load().right)),
@@ -79,6 +80,12 @@ class Senses:
     def table_distance(self) -> float | None:
         ground = blob_ground(self.table(), self.robot.camera_model("forward"))
         return round(ground.distance, 6) if ground.found else None
+
+    def tables_in_view(self) -> list[dict[str, Any]]:
+        seen = see_tables([(self.image(), self.robot.camera_model("forward"))])
+        return [{"x": round(t.rect.x, 6), "y": round(t.rect.y, 6), "heading": _degrees(t.rect.axis),
+                 "length": round(t.rect.length, 6), "width": round(t.rect.width, 6),
+                 "clipped": t.clipped} for t in seen]
 
     def partner_in_view(self) -> bool:
         blobs = find_robots(self.image())

@@ -9,8 +9,6 @@ its position.
 
 from __future__ import annotations
 
-import math
-import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from typing import Any
@@ -18,10 +16,10 @@ from typing import Any
 from yaml import events as ev
 
 from hfsm.errors import Finding
+from hfsm.yamlscalars import CONVERT, CONVERT_ME, CORE, NOT_VALID, PlainScalars, implicit_kind
 
 Path_ = tuple[str | int, ...]
 Pos = tuple[int, int]
-CORE = "tag:yaml.org,2002:"
 MAX_DEPTH = 100  # nested collections
 MAX_NODES = 1_000_000  # scalars and collections in one file, keys included
 MAX_EXPANDED = 100_000  # nodes that aliases add by repeating their anchors
@@ -35,80 +33,6 @@ class TooBig(Exception):
         self.pos = pos
         self.message = message
         self.code = code
-
-
-def _int(text: str) -> int:
-    if text.startswith(("0o", "0x")):
-        return int(text[2:], 8 if text[1] == "o" else 16)
-    return int(text)
-
-
-def _float(text: str) -> float:
-    lowered = text.lower()
-    if lowered.endswith((".inf", ".nan")):
-        raise ValueError(text)
-    value = float(text)
-    if not math.isfinite(value):
-        raise ValueError(text)
-    return value
-
-
-def _bool(text: str) -> bool:
-    if text.lower() not in ("true", "false"):
-        raise ValueError(text)
-    return text.lower() == "true"
-
-
-def _null(text: str) -> None:
-    if text not in ("", "~", "null", "Null", "NULL"):
-        raise ValueError(text)
-
-
-_CONVERT: dict[str, Any] = {"str": str, "int": _int, "float": _float, "bool": _bool, "null": _null}
-_NOT_VALID = {"float": "is not a finite number (NaN and infinities are refused)"}
-
-# The YAML 1.2 core schema's implicit types: (first characters, kind, pattern).
-_IMPLICIT = (
-    ("tTfF", "bool", r"^(?:true|True|TRUE|false|False|FALSE)$"),
-    ("~nN", "null", r"^(?:~|null|Null|NULL)$"),
-    ("-+0123456789", "int", r"^(?:[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+)$"),
-    (
-        "-+0123456789.",
-        "float",
-        r"^(?:[-+]?(?:\.[0-9]+|[0-9]+(?:\.[0-9]*)?)(?:[eE][-+]?[0-9]+)?"
-        r"|[-+]?\.(?:inf|Inf|INF)|\.(?:nan|NaN|NAN))$",
-    ),
-)
-_BY_FIRST: dict[str, list[tuple[str, re.Pattern[str]]]] = {}
-for _chars, _kind, _pattern in _IMPLICIT:
-    for _ch in _chars:
-        _BY_FIRST.setdefault(_ch, []).append((_kind, re.compile(_pattern)))
-
-
-def _implicit_kind(text: str) -> str | None:
-    for kind, pattern in _BY_FIRST.get(text[0], ()):
-        if pattern.match(text):
-            return kind
-    return None
-
-
-_CONVERT_ME: Any = object()
-
-
-class _PlainScalars(dict[str, Any]):
-    """Plain scalar text -> its value, for texts seen before; _CONVERT_ME when it needs checking."""
-
-    def __missing__(self, text: str) -> Any:
-        if not text:
-            return None
-        kind = _implicit_kind(text)
-        try:
-            value = text if kind is None else _CONVERT[kind](text)
-        except ValueError:
-            return _CONVERT_ME  # reported, at each place, by the slow path
-        if len(self) < 10_000:
-            self[text] = value
-        return value
 
 
 _NO_KEY: Any = object()  # a mapping waits for its next key
@@ -165,7 +89,7 @@ class EventBuilder:
         self.recording = 0  # anchored collections open now
         self.done = False
         self.alias_pos: Pos = (1, 1)  # of the alias being replayed
-        self._plain = _PlainScalars()
+        self._plain = PlainScalars()
         self.empty = False  # the stream holds no document
 
     def error(self, pos: Pos, code: str, message: str) -> None:
@@ -200,7 +124,7 @@ class EventBuilder:
             raise TooBig(pos, f"the document has more than {MAX_NODES:,} nodes")
         text = event.value
         value = self._plain[text] if event.implicit[0] else text
-        if value is _CONVERT_ME:
+        if value is CONVERT_ME:
             value = self._scalar(event, pos)
         if parent.is_list:
             path = (*parent.path, len(parent.value))
@@ -319,18 +243,18 @@ class EventBuilder:
                 return text
             if not text:
                 return None
-            kind = _implicit_kind(text)
+            kind = implicit_kind(text)
             if kind is None:
                 return text
-        elif tag.startswith(CORE) and tag[len(CORE) :] in _CONVERT:
+        elif tag.startswith(CORE) and tag[len(CORE) :] in CONVERT:
             kind = tag[len(CORE) :]
         else:
             self.error(pos, "E102", f"tag '{tag}' is not allowed: machine files take plain YAML")
             return text
         try:
-            return _CONVERT[kind](text)
+            return CONVERT[kind](text)
         except ValueError:
-            self.error(pos, "E100", f"'{text}' {_NOT_VALID.get(kind, f'is not a valid {kind}')}")
+            self.error(pos, "E100", f"'{text}' {NOT_VALID.get(kind, f'is not a valid {kind}')}")
         return text
 
     def _key(self, event: Any, key: Any, parent: _Frame, pos: Pos) -> Any:

@@ -232,8 +232,9 @@ def _spans(u: np.ndarray, v: np.ndarray, w: int, h: int
         bound = b / a
     lo = np.max(np.where(a < 0, bound, -np.inf), axis=2)
     hi = np.min(np.where(a > 0, bound, np.inf), axis=2)
-    first = np.maximum(np.ceil(lo), 0).astype(np.int64)
-    last = np.minimum(np.floor(hi), w - 1).astype(np.int64)
+    # clipped both ways before the cast: a near-horizontal edge gives bounds past int64 (1e190)
+    first = np.clip(np.ceil(lo), 0, w).astype(np.int64)
+    last = np.clip(np.floor(hi), -1, w - 1).astype(np.int64)
     rows = (first <= last) & ~np.any((a == 0) & (b < 0), axis=2) & (sign != 0)[:, None]
     return first, last, rows
 

@@ -33,6 +33,7 @@ SENSE = """
           seen:
             table: "${in.table_in_view}"
             bearing: "${in.table_bearing}"
+            tables: "${in.tables_in_view}"
             partner: "${in.partner_in_view}"
             pose: "${in.pose}"
             battery: "${in.battery}"
@@ -64,6 +65,10 @@ def test_inputs_are_what_each_robot_senses(
     assert (r1["table"], r1["partner"]) == (True, False)
     assert abs(r1["bearing"]) < 3.0
     assert (r2["table"], r2["bearing"], r2["partner"]) == (False, None, True)
+    (top,) = r1["tables"]  # 1.5 m ahead, its long axis along r1's view, 0.8 x 0.5 m
+    assert (top["x"], top["y"], top["heading"]) == pytest.approx((1.5, 0.0, 0.0), abs=0.08)
+    assert (top["length"], top["width"]) == pytest.approx((0.8, 0.5), abs=0.1)
+    assert r2["tables"] == []
     for seen in (r1, r2):
         assert seen["pose"] == {"x": 0.0, "y": 0.0, "yaw": 0.0}  # standing still: odometry at its start
         assert seen["battery"] == pytest.approx(0.49)

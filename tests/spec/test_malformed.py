@@ -54,6 +54,7 @@ ERRORS: dict[str, list[tuple[str, str, str]]] = {
     "state_time_outputs": [("3:14", "E331", "'state.time'")],
     "two_saves": [("8:39", "E325", "'one'")],
     "watch_bad_target": [("5:11", "E301", "did you mean 'gave_up'?")],
+    "watch_wrapped": [("8:13", "E314", "write 'state.time > 0.5'")],
     "watch_vars_in_timer": [("4:8", "E314", "'vars.t'")],
 }
 

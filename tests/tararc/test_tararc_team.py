@@ -3,13 +3,16 @@
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 from pathlib import Path
+from typing import Any
 
 import pytest
 from tararc_runs import case, decisions, run_plan
 
 from behaviours.tararc.history import History, Record
 from behaviours.tararc.history_file import dumps, load, save
+from hfsm.runtime.run import RunResult
 
 KEYS = ("role", "agent", "task", "lost", "outcomes")
 TEAM_CASES = [
@@ -34,6 +37,27 @@ def test_thirty_percent_loss_gives_the_same_team_later(name: str, seed: int) -> 
     if not plan.fail:
         for agent, result in clean.agents.items():
             assert lossy.agents[agent].time >= result.time
+
+
+def one_plan(result: RunResult) -> dict[str, Any]:
+    """The plan every robot that finished holds: they must all hold the same."""
+    plans = [a.outputs["plan"] for a in result.agents.values() if a.outcome == "done"]
+    assert plans and all(p == plans[0] for p in plans)
+    return plans[0]
+
+
+@pytest.mark.parametrize("name", [*TEAM_CASES, "a_group_waits_for_its_slowest_member"])
+def test_every_robot_holds_the_same_plan(name: str) -> None:
+    plan = case("tararc.test.yaml", name)
+    assert one_plan(run_plan(plan)[0]) == one_plan(run_plan(plan, loss=0.3, seed=5)[0])
+
+
+def test_a_robot_says_the_state_it_computes_with() -> None:
+    """Its battery drains while the team shares: what it said is still what it computes with."""
+    plan = case("tararc.test.yaml", "four_robots_two_tasks")
+    drain = plan.inputs[0][0].model_copy(update={"at": 0.1, "in_": {"battery": 0.2}})
+    result, _ = run_plan(replace(plan, inputs=[*plan.inputs, (drain, plan.inputs[0][1])]))
+    assert one_plan(result)["robots"]["r0"]["energy"] == 1.0
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2, 3])

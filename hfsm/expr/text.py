@@ -1,0 +1,38 @@
+"""Values as text (SPEC 7): strings as they are, numbers in their fewest digits, lists and dicts as JSON."""
+
+from __future__ import annotations
+
+import json
+import math
+from typing import Any
+
+
+def format_number(value: float) -> str:
+    if math.isfinite(value) and value == int(value) and "e" not in repr(value):
+        return str(int(value))
+    return repr(value)
+
+
+def to_text(value: Any) -> str:
+    """A value as text: strings as they are, numbers in their fewest digits, lists and dicts as JSON."""
+    if isinstance(value, str):
+        return value
+    return _json(value)
+
+
+def _json(value: Any) -> str:
+    if value is None:
+        return "null"
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return format_number(value)
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, str):
+        return json.dumps(value, ensure_ascii=False)
+    if isinstance(value, list):
+        return "[" + ", ".join(_json(v) for v in value) + "]"
+    if isinstance(value, dict):
+        return "{" + ", ".join(f"{_json(str(k))}: {_json(v)}" for k, v in value.items()) + "}"
+    return _json(str(value))
