@@ -74,3 +74,34 @@ def test_the_agent_falls_mid_move_and_a_member_takes_over(
     assert new in ("r2", "r3") and agents[new]["outputs"]["role"] == "agent"
     lossy = run(capsys, tmp_path, "--scenario", scenario, "--radio-loss", "0.3")
     assert decided(lossy) == decided(clean)
+
+
+LENDING = """
+room: {width: 10.0, depth: 8.0}
+tables: []
+targets:
+  - {id: north, x: 0.0, y: 2.5, difficulty: 0.4, priority: 1}
+  - {id: south, x: 0.5, y: -2.5, difficulty: 0.7, priority: 2}
+robots:
+  r1: {x: -2.0, y: 0.5, body: light}
+  r2: {x: -1.0, y: 0.5, body: light}
+  r3: {x: -2.0, y: -0.5, body: light}
+  r4: {x: -1.0, y: -0.5, body: light}
+  r5: {x: 0.0, y: -0.5, body: light}
+failures:
+  - {robot: r2, at: 4.0, reason: fell}
+"""
+
+
+@pytest.mark.slow
+def test_a_member_falls_and_the_nearest_group_lends_one(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    """7b: north's group (r1, r2) loses r2; south's (r3, r4, r5) lends r4, the nearest r1."""
+    scenario = tmp_path / "lending.yaml"
+    scenario.write_text(LENDING, encoding="utf-8")
+    agents = run(capsys, tmp_path, "--scenario", scenario)["agents"]
+    assert agents["r2"]["failed"] == "fell"
+    groups = [g["members"] for g in agents["r1"]["outputs"]["plan"]["groups"]]
+    assert groups == [["r1", "r4"], ["r3", "r5"]]
+    assert all(agents[r]["outputs"]["outcomes"] == [True, True] for r in ("r1", "r3", "r4", "r5"))
