@@ -62,6 +62,20 @@ def test_wall_to_the_right(table_x: float) -> None:
         assert seen.distance == pytest.approx(2.5 - table_x, abs=0.03)
 
 
+@pytest.mark.parametrize("turned", [-12.0, 12.0])
+def test_an_oblique_wall_is_seen_as_a_line(turned: float) -> None:
+    """Turned `turned` degrees, r1 sees the wall to its right (the room's +x wall) at its
+    distance, its normal off the body's right axis by as much."""
+    with World(scenario_from_dict(at_table((0.0, 0.0, turned), None, table_x=1.2)), 0) as world:
+        look(world, -2.0, 0.5)
+        robot = world.robots["r1"]
+        seen = wall_to_side(robot.image("forward"), robot.camera_model("forward"), "right")
+        x = world.truth.robot_pose("r1")[0]
+        assert seen.found
+        assert seen.distance == pytest.approx(2.5 - x, abs=0.03)
+        assert math.degrees(seen.normal) == pytest.approx(-90.0 - turned, abs=2.0)
+
+
 def test_no_table_no_edge() -> None:
     scenario = {"room": {"width": 5.0, "depth": 5.0}, "robots": {"r1": {"x": 0.0, "y": -2.0, "yaw": -90.0}}}
     with World(scenario_from_dict(scenario), 0) as world:
