@@ -31,6 +31,6 @@ def machines() -> Traversable:
 
 def primitives() -> tuple[Primitive, ...]:
     """The primitives themselves (imports the simulator): what `primitives.json` is made from."""
-    from behaviours import approach, carry, drive
+    from behaviours import approach, carry, drive, teamwork
 
-    return (*approach.PRIMITIVES, *carry.PRIMITIVES, *drive.PRIMITIVES)
+    return (*approach.PRIMITIVES, *carry.PRIMITIVES, *drive.PRIMITIVES, *teamwork.PRIMITIVES)

@@ -14,6 +14,8 @@ from __future__ import annotations
 import difflib
 import json
 import math
+import os
+import tempfile
 from collections.abc import Callable
 from pathlib import Path
 from typing import TypeVar
@@ -53,7 +55,15 @@ def _robot_entry(robot: str, history: History) -> dict[str, object]:
 
 
 def save(path: Path, history: History) -> None:
-    path.write_text(dumps(history), encoding="utf-8")
+    """Write atomically: a reader (or a run stopped mid-write) sees the old file or the new one."""
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as out:
+            out.write(dumps(history))
+        os.replace(tmp, path)
+    except BaseException:
+        os.unlink(tmp)
+        raise
 
 
 def load(path: Path) -> History:

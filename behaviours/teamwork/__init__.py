@@ -1,0 +1,21 @@
+"""Primitives of the TARARC team (machines/tararc*.yaml): the radio's exchanges, the plan, the history.
+
+Pure of any world: they hear and say over the radio and compute with `behaviours.tararc`, so they
+run in every world, `none` included. Moving to a place is the world's (`go_to`).
+"""
+
+from __future__ import annotations
+
+from behaviours.teamwork.memory import tararc_recall, tararc_remember
+from behaviours.teamwork.plans import tararc_allocate, tararc_help
+from behaviours.teamwork.radio import tararc_gather, tararc_watch
+from hfsm.primitive import Primitive
+
+PRIMITIVES: tuple[Primitive, ...] = (
+    tararc_recall,
+    tararc_gather,
+    tararc_allocate,
+    tararc_watch,
+    tararc_help,
+    tararc_remember,
+)

@@ -1,0 +1,51 @@
+"""Hearing the team: every teammate's copy of a said message, and silence as a sign of failure."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from hfsm.primitive import Context, Outcome, primitive
+from hfsm.runtime.program import span_ticks
+
+
+@primitive(outcomes=["heard"], outputs=["heard"])
+def tararc_gather(ctx: Context, *, message: str, team: list[Any]) -> Outcome:
+    """Wait until every robot of `team` (but this one) has said `message` (as `say` sends it); the
+    data of each, by sender. Copies from robots outside the team are read and dropped."""
+    wanted = {str(r) for r in team} - {ctx.agent}
+    heard: dict[str, Any] = {}
+
+    def drain() -> bool:
+        while (m := ctx.receive(message)) is not None:
+            if m.sender in wanted:
+                heard[m.sender] = m.data.get("data", {})
+        return wanted <= heard.keys()
+
+    ctx.wait_until(drain)
+    return Outcome("heard", heard=dict(sorted(heard.items())))
+
+
+@primitive(outcomes=["changed"], outputs=["lost"])
+def tararc_watch(
+    ctx: Context, *, team: list[Any], lost: list[Any], silence: float = 5.0, message: str = "tararc_alive"
+) -> Outcome:
+    """Listen to the team's heartbeats (`message`, said with data `{lost: [...]}`) until more robots
+    are known lost than `lost`: one silent for `silence` seconds, or one a teammate says is lost.
+
+    Lost robots are a set that only grows, so teammates that hear of the same losses agree.
+    """
+    known = {str(r) for r in lost}
+    watched = {str(r) for r in team} - known - {ctx.agent}
+    heard = dict.fromkeys(watched, ctx.tick)
+    quiet = span_ticks(silence, ctx.dt)
+
+    def news() -> bool:
+        while (m := ctx.receive(message)) is not None:
+            if m.sender in heard:
+                heard[m.sender] = ctx.tick
+            known.update(str(r) for r in m.data.get("data", {}).get("lost", []))
+        known.update(r for r, tick in heard.items() if ctx.tick - tick >= quiet)
+        return known != {str(r) for r in lost}
+
+    ctx.wait_until(news)
+    return Outcome("changed", lost=sorted(known))
