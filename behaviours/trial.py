@@ -13,7 +13,7 @@ from hfsm.load import load
 from hfsm.registry import Registry
 from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, run
-from hfsm.trace import JsonlTrace
+from hfsm.trace import JsonlTrace, TraceSink
 from sim import World
 
 
@@ -48,8 +48,9 @@ class TrialResult:
         return asdict(self)
 
 
-def run_trial(spec: TrialSpec) -> TrialResult:
-    """Load, check and run `spec.machine` for the scenario's robots; never raises for a failed run."""
+def run_trial(spec: TrialSpec, sink: TraceSink | None = None) -> TrialResult:
+    """Load, check and run `spec.machine` for the scenario's robots; never raises for a failed run.
+    The trace goes to the file `spec.trace` or, without one, to `sink` (a scorer's own reader)."""
     started = time.perf_counter()
     registry = Registry.discover()
     loaded = load([Path(spec.machine)], registry=registry)
@@ -61,7 +62,7 @@ def run_trial(spec: TrialSpec) -> TrialResult:
                                radio_loss=spec.radio_loss, recorder=_recorder(spec.video),
                                image_size=spec.image_size, renderer=spec.renderer))
         stack.callback(world.close)
-        trace = JsonlTrace(Path(spec.trace)) if spec.trace else None
+        trace = JsonlTrace(Path(spec.trace)) if spec.trace else sink
         if trace:
             stack.callback(trace.close)
         options = RunOptions(top.name, world.agent_names(), params, spec.seed, spec.max_time)

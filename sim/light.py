@@ -1,7 +1,9 @@
 """Light robots: a camera-less cylinder (drawn as boxes) that drives by velocity commands, for
 teams of tens (the TARARC allocation experiments). No head, no arms, no cameras: it senses its
 odometry (in the room's frame, from the start pose the scenario tells it), its battery and bumps,
-and hears the radio. It collides with walls, tables and other robots like the humanoid does."""
+hears the radio, and has a proximity sensor (`nearby`), as the paper's Player/Stage robots have
+lasers, to steer round what is near. It collides with walls, tables and other robots like the
+humanoid does."""
 
 from __future__ import annotations
 
@@ -26,6 +28,7 @@ class LightGeometry:
 
 
 LIGHT_BODY = LightGeometry()
+FLOOR_TOP = 0.05  # a body whose bounding box ends below this height is the floor
 LIGHT_MOTION = MotionProfile(forward_max=0.5, backward_max=0.5, sideways_max=0.5, turn_max=2.0)
 
 
@@ -73,6 +76,28 @@ class LightRobot(Base):
     def holding(self) -> bool:
         """A light body has no hands."""
         return False
+
+    def nearby(self, reach: float) -> list[tuple[float, float]]:
+        """A proximity sensor, as the paper's Player/Stage robots have lasers and sonars: for every
+        thing (robot, wall, table) within `reach` metres of the body's side, its nearest point, as
+        (forward, left) metres from the body's centre, nearest thing first. A failed body senses
+        nothing."""
+        if self.failed or reach <= 0.0:
+            return []
+        x, y, yaw = self._true_pose()
+        span = LIGHT_BODY.radius + reach
+        low, high = [x - span, y - span, 0.05], [x + span, y + span, LIGHT_BODY.height]
+        overlapping = p.getOverlappingObjects(low, high, physicsClientId=self._cid) or ()
+        found: list[tuple[float, float, float]] = []
+        for other in sorted({body for body, _ in overlapping} - {self._chassis.body}):
+            if p.getAABB(other, physicsClientId=self._cid)[1][2] < FLOOR_TOP:
+                continue  # the floor, which the body stands on
+            points = p.getClosestPoints(self._chassis.body, other, reach, physicsClientId=self._cid)
+            if points:
+                nearest = min(points, key=lambda q: q[8])
+                found.append((nearest[8], nearest[6][0] - x, nearest[6][1] - y))
+        c, s = math.cos(yaw), math.sin(yaw)
+        return [(c * dx + s * dy, -s * dx + c * dy) for _, dx, dy in sorted(found)]
 
     # Teams of tens: the leash is kept once per control tick, not every physics step (one pybullet
     # call a step instead of two), so a blocked light robot may lead its body by a tick's travel.

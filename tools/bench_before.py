@@ -215,13 +215,41 @@ def section(runs: Runs, grind: dict[str, dict[str, float]], rev: str, rounds: in
     if grind:
         ratios += [f"{grind['now'][kind] / grind['before'][kind]:.2f}x" for kind in ("w1", "w2")]
     lines.append("| " + " | ".join(ratios) + " |")
+    lines += ["", *_trace_table(runs, grind, rev)]
     if grind:
         lines += [
             "",
-            f"- Instructions: `valgrind --tool=callgrind` of a whole worker process at n and 2n transitions "
-            f"(W1 n = {GRIND['w1']:,}, W2 n = {GRIND['w2']:,}, PYTHONHASHSEED=0), (I(2n) - I(n)) / n: "
-            "start-up, loading and compiling cancel out; the same on every run.",
+            "- Instructions: `valgrind --tool=callgrind` of one worker process per engine that runs each "
+            "workload at n and 2n transitions between calls of `time.process_time` (callgrind "
+            f"`--dump-before={MARK}`); (I(2n) - I(n)) / n, so a run's set-up cancels out (W1 n = "
+            f"{GRIND['w1']:,}, W2 n = {GRIND['w2']:,}, PYTHONHASHSEED=0): the same on every run.",
         ]
+    return lines
+
+
+def _trace_table(runs: Runs, grind: dict[str, dict[str, float]], rev: str) -> list[str]:
+    """The JSONL trace (to /dev/null) on against off, in the same process: issue 12's point 6."""
+    lines = [
+        f"The JSONL trace on (`JsonlTrace` to /dev/null; W1 {SIZES['w1_jsonl']:,} and W2 "
+        f"{SIZES['w2_jsonl']:,} transitions) against off, timed in the same worker processes (on / off: "
+        "median of the rounds' ratios):",
+        "",
+        "| | W1 on µs/transition (wall) | W1 on / off (wall) | W1 on / off (CPU) | W2 on µs/transition "
+        "| W2 on / off (wall) | W2 on / off (CPU) |"
+        + (" W1 on / off (instructions) | W2 |" if grind else ""),
+        "|---|---:|---:|---:|---:|---:|---:|" + ("---:|---:|" if grind else ""),
+    ]
+    for name in ("before", "now"):
+        got = runs[name]
+        cells = [name if name == "now" else f"before (`{rev}`)"]
+        for kind in ("w1", "w2"):
+            cells.append(f"{_median(got, kind + '_jsonl', 'wall') * 1e6:.2f}")
+            for clock in ("wall", "cpu"):
+                ratio = statistics.median(r[kind + "_jsonl"][clock] / r[kind][clock] for r in got)
+                cells.append(f"{ratio:.2f}x")
+        if grind:
+            cells += [f"{grind[name][k + '_jsonl'] / grind[name][k]:.2f}x" for k in ("w1", "w2")]
+        lines.append("| " + " | ".join(cells) + " |")
     return lines
 
 

@@ -1,7 +1,8 @@
 """go_to: drive to a point (plus a formation offset) by odometry, tick by tick; stop.
 
-The robot steers by what it senses: its odometry, and the points of others it was told over the
-radio (`avoid`), never the simulator's poses.
+The robot steers by what it senses: its odometry, the points of others it was told over the
+radio (`avoid`), and, with `look`, what its proximity sensor senses (light bodies); never the simulator's
+poses.
 """
 
 from __future__ import annotations
@@ -10,6 +11,7 @@ import math
 from typing import Any
 
 from behaviours.approach.frames import odom_to_body, wrap
+from behaviours.drive.avoid import Detour, sensed
 from hfsm.primitive import Context, Outcome, primitive
 
 Point = tuple[float, float]
@@ -30,11 +32,10 @@ def goal_point(start: Point, x: float, y: float, offset: list[float], frame: str
     return (x + dx, y + dy)
 
 
-def steer(here: tuple[float, float, float], goal: Point, speed: float, avoid: list[Point],
-          clearance: float) -> tuple[float, float, float]:
-    """Body-frame velocity (forward, left, turn): towards the goal, braking near it (BRAKE m/s per
-    metre left, never below CREEP), pushed away from points nearer than `clearance`, turning to face
-    the way it goes."""
+def heading(here: tuple[float, float, float], goal: Point, speed: float, avoid: list[Point],
+            clearance: float) -> Point:
+    """Room-frame velocity towards the goal, braking near it (BRAKE m/s per metre left, never below
+    CREEP), pushed away from points nearer than `clearance`."""
     gx, gy = goal[0] - here[0], goal[1] - here[1]
     dist = math.hypot(gx, gy)
     pace = min(speed, BRAKE * dist + CREEP)
@@ -45,6 +46,13 @@ def steer(here: tuple[float, float, float], goal: Point, speed: float, avoid: li
         if 1e-9 < gap < clearance:
             push = speed * (clearance - gap) / clearance * 2.0
             vx, vy = vx + rx / gap * push, vy + ry / gap * push
+    return (vx, vy)
+
+
+def body_velocity(here: tuple[float, float, float], velocity: Point, speed: float
+                  ) -> tuple[float, float, float]:
+    """A room-frame velocity as the body's (forward, left, turn), turning to face the way it goes."""
+    vx, vy = velocity
     forward, left = odom_to_body((0.0, 0.0, here[2]), (vx, vy))
     turn = wrap(math.atan2(vy, vx) - here[2]) * 2.0 if math.hypot(vx, vy) > 0.05 * speed else 0.0
     return forward, left, turn
@@ -58,11 +66,13 @@ def _points(avoid: list[Any]) -> list[Point]:
 @primitive(outcomes=["arrived", "timeout"], outputs=["x", "y"], world="sim")
 def go_to(ctx: Context, *, x: float, y: float, offset: list[float] | None = None, frame: str = "odometry",
           relative: bool = False, tolerance: float = 0.1, speed: float = 0.0,
-          avoid: list[Any] | None = None, clearance: float = 0.6, timeout: float = 120.0) -> Outcome:
+          avoid: list[Any] | None = None, clearance: float = 0.6, look: float = 0.0,
+          timeout: float = 120.0) -> Outcome:
     """Drive to the point (x, y) of the odometry frame (`relative`: that far from where it is) plus a
     formation `offset` [dx, dy] (see `frame`), at `speed` m/s (0: the body's top speed), keeping
-    `clearance` metres from the `avoid` points ([x, y] or {x, y}: where others said they are);
-    `arrived` within `tolerance` metres."""
+    `clearance` metres from the `avoid` points ([x, y] or {x, y}: where others said they are) and,
+    when `look` > 0, from what its proximity sensor senses within `look` metres, steering round
+    it (`avoid.Detour`); `arrived` within `tolerance` metres."""
     robot = ctx.robot
     start = robot.odometry()
     if relative:
@@ -72,6 +82,7 @@ def go_to(ctx: Context, *, x: float, y: float, offset: list[float] | None = None
     pace = min(speed, top) if speed > 0 else top
     others = _points(avoid or [])
     deadline = ctx.time + timeout
+    way_out = Detour()
     try:
         while True:
             here = robot.odometry()
@@ -79,7 +90,11 @@ def go_to(ctx: Context, *, x: float, y: float, offset: list[float] | None = None
                 return Outcome("arrived", x=round(here[0], 6), y=round(here[1], 6))
             if ctx.time >= deadline:
                 return Outcome("timeout", x=round(here[0], 6), y=round(here[1], 6))
-            robot.set_velocity(*steer(here, goal, pace, others, clearance))
+            velocity = heading(here, goal, pace, others, clearance)
+            seen = sensed(robot, look, here[2])
+            if seen:
+                velocity = way_out.steer(ctx.time, velocity, seen, clearance, pace)
+            robot.set_velocity(*body_velocity(here, velocity, pace))
             ctx.wait()
     finally:
         robot.stop()

@@ -112,3 +112,17 @@ def test_the_eq5_battery_falls_with_distance_and_reads(worlds: list[World]) -> N
     assert level == pytest.approx(expected, abs=0.02)
     assert world.robots["r2"].battery() == pytest.approx(1.0)
     assert not world.robots["r1"].battery_empty()
+
+
+def test_the_proximity_sensor_finds_robots_and_walls_not_the_floor(worlds: list[World]) -> None:
+    world = make(worlds, {"r1": {"x": 3.0, "y": 0.0, "yaw": 90, "body": "light"},
+                          "r2": {"x": 2.4, "y": 0.0, "yaw": 0, "body": "light"}},
+                 jitter={"position": 0.0, "yaw": 0.0})
+    world.advance(0.05)
+    robot = world.robots["r1"]
+    assert isinstance(robot, LightRobot)
+    seen = robot.nearby(1.0)
+    assert len(seen) == 2  # r2 on its left (0.45 m to its side), the wall at x = 4 on its right
+    assert seen[0] == pytest.approx((0.0, 0.45), abs=0.02)
+    assert seen[1] == pytest.approx((0.0, -1.0), abs=0.02)
+    assert robot.nearby(0.2) == []

@@ -148,6 +148,8 @@ def test_never_crashes_and_every_enter_has_its_exit(
     machine, _ = drawn
     result, records = _run(tmp_path_factory.mktemp("m"), machine, max_time=5)
     assert set(result.agents) == {"a", "b"}
+    # every wait here has a timer above it (as the checks ask): the run never blocks for good
+    assert not (result.error or "").startswith("blocked forever"), result.error
     check_nesting(records)
 
 

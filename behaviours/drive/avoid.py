@@ -1,0 +1,103 @@
+"""Steering round what a robot senses near it (its proximity sensor): slide past each thing, never
+towards one, and, when that leaves it wedged, a detour across the way it wants to go."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+Point = tuple[float, float]
+Near = list[tuple[float, float, float]]
+JAMMED_S, DETOUR_S = 1.0, 2.0
+
+
+@dataclass
+class Detour:
+    """A robot slowed to a crawl by what it senses for JAMMED_S seconds heads across its way (to
+    the side with less near it the first time, then always that side) for DETOUR_S seconds, twice
+    that the second time, and so on, still dodging: a way out of the wedges that sliding alone never
+    leaves (a bug-style escape, deterministic)."""
+
+    slow_since: float | None = None
+    until: float = -1.0
+    way: Point = (0.0, 0.0)
+    side: float = 0.0  # 1: left of the way it wants to go, -1: right; kept once chosen
+    detours: int = 0
+
+    def steer(self, now: float, wanted: Point, seen: list[Point], clearance: float, speed: float) -> Point:
+        """The velocity (room frame) to command now instead of `wanted`."""
+        if now < self.until:
+            return dodge(self.way, seen, clearance, speed)
+        got = dodge(wanted, seen, clearance, speed)
+        if math.hypot(*got) >= 0.25 * math.hypot(*wanted):
+            self.slow_since = None
+            return got
+        if self.slow_since is None:
+            self.slow_since = now
+        elif now - self.slow_since >= JAMMED_S:
+            pace = math.hypot(*wanted) or 1e-9
+            left = (-wanted[1] / pace * speed, wanted[0] / pace * speed)
+            if self.side == 0.0:
+                self.side = -1.0 if sum(left[0] * ox + left[1] * oy for ox, oy in seen) > 0 else 1.0
+            self.way = (left[0] * self.side, left[1] * self.side)
+            self.detours += 1
+            self.until, self.slow_since = now + DETOUR_S * self.detours, None
+        return got
+
+
+def dodge(velocity: Point, seen: list[Point], clearance: float, speed: float) -> Point:
+    """`velocity` (room frame) bent around the obstacles `seen` (points relative to the robot, room
+    frame) nearer than `clearance`: a slide past each (`_side`), faster the nearer it is, then no
+    motion towards any (none at all when that cannot be had). At most `speed` m/s."""
+    near = []
+    for ox, oy in seen:
+        gap = math.hypot(ox, oy)
+        if 1e-9 < gap < clearance:
+            near.append((ox / gap, oy / gap, (clearance - gap) / clearance))
+    vx, vy = velocity
+    for ux, uy, close in near:
+        side = _side(ux, uy, near, velocity)
+        vx, vy = vx + (side * uy - ux * close) * speed * close, vy + (-side * ux - uy * close) * speed * close
+    vx, vy = _away_from(near, vx, vy)
+    if near and math.hypot(vx, vy) < 0.05 * speed:  # wedged: back off the nearest, to its right
+        ux, uy, _close = max(near, key=lambda n: n[2])
+        vx, vy = _away_from(near, (uy - ux) * speed / 2, (-ux - uy) * speed / 2)
+    pace = math.hypot(vx, vy)
+    return (vx / pace * speed, vy / pace * speed) if pace > speed else (vx, vy)
+
+
+def _side(ux: float, uy: float, near: Near, velocity: Point) -> float:
+    """Which way to slide past the obstacle in direction (ux, uy): 1 to its right, -1 to its left.
+    Away from the other near obstacles; else the way the robot wants to go; else right, so two
+    robots meeting head-on both keep right and pass."""
+    rx, ry = uy, -ux
+    crowd = sum((rx * ox + ry * oy) * close for ox, oy, close in near if (ox, oy) != (ux, uy))
+    if abs(crowd) > 1e-6:
+        return -1.0 if crowd > 0 else 1.0
+    want = rx * velocity[0] + ry * velocity[1]
+    return -1.0 if want < -1e-6 * (1 + abs(velocity[0]) + abs(velocity[1])) else 1.0
+
+
+def _away_from(near: Near, vx: float, vy: float) -> Point:
+    """(vx, vy) with no part towards any of the `near` directions; (0, 0) when that cannot be had."""
+    for _ in range(8):
+        for ux, uy, _close in near:
+            towards = vx * ux + vy * uy
+            if towards > 0.0:
+                vx, vy = vx - towards * ux, vy - towards * uy
+    if any(vx * ux + vy * uy > 1e-6 for ux, uy, _close in near):
+        return (0.0, 0.0)
+    return (vx, vy)
+
+
+def sensed(robot: Any, look: float, yaw: float) -> list[Point]:
+    """What the proximity sensor senses within `look` metres, turned into the room frame by
+    odometry's yaw."""
+    if look <= 0.0:
+        return []
+    nearby = getattr(robot, "nearby", None)
+    if nearby is None:
+        raise ValueError("go_to: `look` needs a body with a proximity sensor (body: light)")
+    c, s = math.cos(yaw), math.sin(yaw)
+    return [(c * f - s * left, s * f + c * left) for f, left in nearby(look)]

@@ -1,0 +1,106 @@
+from __future__ import annotations
+
+import math
+import sys
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT))
+
+from sim.scenario import scenario_from_dict  # noqa: E402
+from tools.sweep import run_sweep  # noqa: E402
+from tools.tararc.experiments import Config, help_trials, main_trials  # noqa: E402
+from tools.tararc.measure import Timeline, measure  # noqa: E402
+from tools.tararc.report import growth, median, write  # noqa: E402
+from tools.tararc.scenes import scene  # noqa: E402
+from tools.tararc.trials import BenchTrial, run_bench_trial  # noqa: E402
+
+
+def _exit(t: float, agent: str, state: str) -> dict[str, Any]:
+    return {"t": t, "agent": agent, "path": ["tararc", "work", "task", state], "kind": "exit"}
+
+
+def test_every_generated_scenario_is_valid() -> None:
+    for trial in main_trials(Config()):
+        scenario_from_dict(trial.scenario)
+    assert len(scene(robots=50, tasks=15)["robots"]) == 50
+
+
+def test_density_packs_the_robots_closer() -> None:
+    def spread(density: float) -> float:
+        xs = [r["x"] for r in scene(density=density)["robots"].values()]
+        return max(xs) - min(xs)
+
+    assert spread(4.0) == pytest.approx(spread(1.0) / 2, abs=0.01)
+
+
+def test_priorities_follow_the_order_given() -> None:
+    targets = scene(priorities=(3, 1, 2))["targets"]
+    assert [(t["difficulty"], t["priority"]) for t in targets] == [(0.3, 3), (0.6, 1), (0.9, 2)]
+
+
+def test_the_timeline_gives_grouped_enclosed_and_recovery() -> None:
+    line = Timeline()
+    records = [
+        _exit(2.0, "a", "form_up"), _exit(5.0, "b", "form_up"), _exit(5.0, "a", "meet_formed"),
+        _exit(5.0, "b", "meet_formed"), {"t": 8.0, "agent": "c", "path": ["tararc"], "kind": "failed"},
+        _exit(9.0, "a", "assign"), _exit(9.5, "b", "assign"), _exit(20.0, "a", "there"),
+        _exit(21.0, "b", "there"), _exit(21.0, "b", "meet_enclosed"),
+        {"t": 21.0, "agent": "b", "path": ["tararc", "remember"], "kind": "event", "vars": {"outcomes": [True]}},
+        {"t": 21.0, "agent": "a", "path": ["tararc", "remember"], "kind": "event", "vars": {"outcomes": [True]}},
+        {"t": 1.0, "agent": "a", "path": ["tararc", "x"], "kind": "receive"},
+    ]  # fmt: skip
+    for record in records:
+        line.write(record)
+    got = measure(line, ["a", "b", "c"], None)
+    assert got == {"completed": True, "grouped": 5.0, "enclosed": 21.0, "converge": 16.0,
+                   "failed": {"c": 8.0}, "recovery": 1.5}
+    assert measure(line, ["a", "b", "c"], "stopped")["converge"] == math.inf
+
+
+def test_help_trials_fail_each_robot_mid_move() -> None:
+    base = [{"experiment": "table1", "x": [1, 2, 3], "seed": 1, "grouped": 20.0, "enclosed": 50.0}]
+    trials = help_trials(Config(help_seeds=1), base)
+    assert [t.x for t in trials] == [f"r{i}" for i in range(1, 11)]
+    assert {f["at"] for t in trials for f in t.scenario["failures"]} == {29.0}
+
+
+def test_report_helpers() -> None:
+    assert median([3.0, math.inf, 1.0]) == 2.0
+    assert median([math.inf]) == math.inf
+    assert "5.0 times as many" in growth([(10, 2.0), (50, 10.0)])
+
+
+@pytest.mark.slow
+def test_results_are_the_same_on_one_and_two_workers() -> None:
+    trials = [BenchTrial("tiny", s, s, scene(robots=4, tasks=2), max_time=15.0) for s in (1, 2)]
+    one = run_sweep(run_bench_trial, trials, workers=1)
+    two = run_sweep(run_bench_trial, trials, workers=2)
+    assert [r["trial"] for r in one] == [0, 1]
+    assert [{k: v for k, v in r.items() if k != "wall"} for r in one] == [
+        {k: v for k, v in r.items() if k != "wall"} for r in two]
+    assert all(r["collisions"] == 0 for r in one)
+
+
+def test_the_report_from_results(tmp_path: Path) -> None:
+    def run(exp: str, x: Any, done: bool = True, **more: Any) -> dict[str, Any]:
+        return {"experiment": exp, "x": x, "seed": 1, "completed": done, "grouped": 10.0 * (1 + (x == 20)),
+                "enclosed": 40.0 if done else math.inf, "converge": 30.0 if done else math.inf,
+                "collisions": 0, "groups": [{"B": 3.0, "difficulty": 0.3}], **more}
+
+    results = [run("table1", [1, 2, 3]), run("table1", [3, 2, 1], done=False), run("density", 1.0),
+               run("size", 10), run("size", 20), run("speed", 0.5),
+               {"experiment": "ability", "x": 0, "seed": 1, "runs": [run("ability", 0), run("ability", 0)]},
+               run("help", "r1", agents=["r1"], recovery=5.0), run("help", "r2", agents=["r1"], recovery=6.0)]
+    doc = tmp_path / "TARARC.md"
+    lines = write(results, doc, tmp_path / "figures", "tools/tararc_bench.py", 90.0, len(results))
+    text = doc.read_text(encoding="utf-8")
+    assert "| (3, 2, 1) | ∞ | ∞ | 0/1 | 0 |" in text and "| (1, 2, 3) | 33.0 | 30.0 | 1/1 | 0 |" in text
+    assert "- Priority orders that never finish: 1 of 2 (paper: 1 of 6): [3, 2, 1]." in lines
+    assert "(2.0 times as many) the time to group goes from 10.0 s to 20.0 s (2.00 times)" in text
+    assert "| agent | 1 | 1/1 | 5.0 |" in text and "| member | 1 | 1/1 | 6.0 |" in text
+    assert sorted(p.name for p in (tmp_path / "figures").iterdir()) == [
+        "fig5_density.png", "fig6_size.png", "fig7_speed.png", "fig8_ability.png"]

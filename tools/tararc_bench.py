@@ -1,0 +1,91 @@
+"""TARARC's experiments (the paper's section 5) with machines/tararc.yaml in the pybullet world.
+
+    nice -n 10 .venv/bin/python tools/tararc_bench.py           # the whole bench, docs/TARARC.md
+    .venv/bin/python tools/tararc_bench.py --quick              # a smoke run (fewer points, 1 seed)
+    .venv/bin/python tools/tararc_bench.py --from docs/results/tararc.json   # the docs again, no run
+
+Table 1 (the six priority orders of 3 tasks), Figure 5 (robot density), Figure 6 (10 to 50
+robots), Figure 7 (robot speed), Figure 8 (4 allocations sharing a history file) and the help
+strategies (every robot of 10 failing once mid-move). Each trial generates its scenario into a
+temporary folder and runs seeded; trials run in parallel processes (or on a Dask cluster) through
+tools/sweep.py, and results come back sorted by trial, the same on any number of workers. The help
+trials fail each robot at a time read off the failure-free run of the same seed, so they run
+after the others.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from dataclasses import replace
+from pathlib import Path
+from typing import Any
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from tools.docsection import write_section  # noqa: E402
+from tools.sweep import SweepError, run_sweep  # noqa: E402
+from tools.tararc.experiments import QUICK, Config, help_trials, main_trials  # noqa: E402
+from tools.tararc.report import write  # noqa: E402
+from tools.tararc.trials import BenchTrial, run_bench_trial  # noqa: E402
+
+
+def run_bench(config: Config, executor: str = "local", workers: int = 2) -> list[dict[str, Any]]:
+    """Every trial's result (wall seconds aside, the same whatever the executor and workers)."""
+    first = main_trials(config)
+    results = run_sweep(run_bench_trial, first, executor=executor, workers=workers, label="tararc")
+    second: list[BenchTrial] = help_trials(config, results)
+    helped = run_sweep(run_bench_trial, second, executor=executor, workers=workers, label="tararc-help")
+    return results + [{**r, "trial": r["trial"] + len(first)} for r in helped]
+
+
+def main(argv: list[str] | None = None) -> int:
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--quick", action="store_true", help="a smoke run: few points, one seed")
+    p.add_argument("--seeds", type=int, help="seeds per point of Table 1 and Figures 5 and 7")
+    p.add_argument("--sizes", help="team sizes of Figure 6, comma-separated (default 10,20,30,40,50)")
+    p.add_argument("--first-seed", type=int, default=1)
+    p.add_argument("--workers", type=int, default=2, help="local processes (with --executor local)")
+    p.add_argument("--executor", default="local", help="local, or dask://HOST:PORT for a Dask cluster")
+    p.add_argument("--doc", type=Path, default=ROOT / "docs" / "TARARC.md")
+    p.add_argument("--figures", type=Path, default=ROOT / "docs" / "figures" / "tararc")
+    p.add_argument("--raw", type=Path, default=ROOT / "docs" / "results" / "tararc.json")
+    p.add_argument("--perf", type=Path, default=ROOT / "docs" / "PERFORMANCE.md",
+                   help="where the bench's wall time is also written")
+    p.add_argument("--from", dest="saved", type=Path, help="no run: write the docs again from a --raw file")
+    args = p.parse_args(argv)
+    config = replace(QUICK if args.quick else Config(), first_seed=args.first_seed)
+    if args.seeds:
+        config = replace(config, seeds=args.seeds)
+    if args.sizes:
+        config = replace(config, sizes=tuple(int(n) for n in args.sizes.split(",")))
+    if args.saved:
+        saved = json.loads(args.saved.read_text(encoding="utf-8"))
+    else:
+        started = time.perf_counter()
+        try:
+            results = run_bench(config, args.executor, args.workers)
+        except SweepError as exc:
+            print(f"tararc_bench: {exc}", file=sys.stderr)
+            return 2
+        command = " ".join(["tools/tararc_bench.py", *(argv if argv is not None else sys.argv[1:])])
+        saved = {"command": command, "wall": time.perf_counter() - started, "workers": args.workers,
+                 "results": results}
+        args.raw.parent.mkdir(parents=True, exist_ok=True)
+        args.raw.write_text(json.dumps(saved, indent=1) + "\n", encoding="utf-8")
+    command, wall, results = saved["command"], saved["wall"], saved["results"]
+    lines = write(results, args.doc, args.figures, command, wall, len(results))
+    write_section(args.perf, "tararc_bench", [
+        f"`{command}`: {len(results)} trials of machines/tararc.yaml (10 to 50 light robots) in "
+        f"{wall / 60:.1f} min wall with {saved['workers']} worker processes, under `nice -n 10` on the "
+        "shared 2-core machine (target: under 20 minutes on 2 cores); results in docs/TARARC.md."])
+    print("\n".join(lines))
+    print(f"wrote {args.doc} and {args.figures} ({wall / 60:.1f} min)", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
