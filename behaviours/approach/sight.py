@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -74,11 +74,13 @@ def see_table(body: Body, yaw: float, pitch: float) -> TableSighting | None:
 def look_around(body: Body, centre: float, spread: float, pitch: float, views: int
                 ) -> list[tuple[np.ndarray, CameraModel]]:
     """Forward images (with the camera model of each) from `views` head yaws spread around the
-    bearing `centre` (body frame). The robot stands still meanwhile."""
+    bearing `centre` (body frame). The robot stands still meanwhile, so every view takes the
+    pose it had when it began: the odometry's drift while the head turns moves no view."""
+    pose = body.odometry()
     out = []
     for i in range(views):
         body.look(clamp_yaw(centre + spread * (i - (views - 1) / 2)), pitch)
-        out.append((body.image("forward"), body.camera("forward")))
+        out.append((body.image("forward"), replace(body.camera("forward"), odom=pose)))
     return out
 
 

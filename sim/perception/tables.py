@@ -126,7 +126,7 @@ def group_pieces(pieces: Sequence[Piece], cfg: PerceptionConfig = DEFAULT_CONFIG
 def see_tables(views: Iterable[tuple[np.ndarray, CameraModel]], value_ratio: float = 0.9,
                cfg: PerceptionConfig = DEFAULT_CONFIG) -> list[TableSeen]:
     """Every table in the views (images with the camera models they were taken with), nearest
-    to the last view's camera first. `value_ratio`: see `colour.top_face`."""
+    to the robot (where the last view was taken) first. `value_ratio`: see `colour.top_face`."""
     views = list(views)
     pieces = [piece for view, (image, camera) in enumerate(views)
               for piece in pieces_in_view(image, camera, view, value_ratio, cfg)]
