@@ -24,6 +24,7 @@ from sim.recorder import Recorder
 from sim.team import AnyRobot
 
 SCORE_KEYS = ("success", "table_wall_distance", "dropped", "robot_collisions", "time")  # table_to_wall
+MANY_TABLES_KEYS = ("table_wall_distances",)  # table_to_wall in a room of several tables
 ROBOT_KEYS = ("robot_collisions", "time")  # a scenario with no task
 
 
@@ -170,7 +171,8 @@ class SimWorld:
         task = self.world.scenario.task
         if task is None:
             return {"score": {k: score[k] for k in ROBOT_KEYS}}
-        return {"task": task, "score": {k: score[k] for k in SCORE_KEYS}}
+        keys = [*SCORE_KEYS, *(k for k in MANY_TABLES_KEYS if k in score)]
+        return {"task": task, "score": {k: score[k] for k in keys}}
 
     def close(self) -> list[str]:
         if self.progress_every and sys.stderr.isatty():

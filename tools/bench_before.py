@@ -192,29 +192,26 @@ def section(runs: Runs, grind: dict[str, dict[str, float]], rev: str, rounds: in
         f"rounds of the best of {REPEATS} repeats; W1 {SIZES['w1']:,} and W2 {SIZES['w2']:,} transitions, "
         "the workloads of bench_engine).",
         "",
-        "| | W1 µs/transition (wall) | W1 CPU | W2 µs/transition (wall) | W2 CPU "
-        "| Python / C calls a transition, W1 | W2 |"
-        + (" instructions a transition (callgrind), W1 | W2 |" if grind else ""),
-        "|---|---:|---:|---:|---:|---:|---:|" + ("---:|---:|" if grind else ""),
     ]
+    head = ["", "W1 µs/transition (wall)", "W1 CPU", "W2 µs/transition (wall)", "W2 CPU"]
+    head += ["Python / C calls a transition, W1", "W2"]
+    head += ["instructions a transition (callgrind), W1", "W2"] if grind else []
+    rows = []
     for name in ("before", "now"):
         got = runs[name]
-        cells = [name if name == "now" else f"before (`{rev}`)"]
+        cells = [_label(name, rev)]
         for kind in ("w1", "w2"):
             cells += [us(_median(got, kind, "wall")), us(_median(got, kind, "cpu"))]
-        for kind in ("w1", "w2"):
-            python, c = got[0][kind]["calls"]
-            cells.append(f"{python:.0f} / {c:.0f}")
-        if grind:
-            cells += [f"{grind[name][kind]:,.0f}" for kind in ("w1", "w2")]
-        lines.append("| " + " | ".join(cells) + " |")
+        cells += ["{:.0f} / {:.0f}".format(*got[0][kind]["calls"]) for kind in ("w1", "w2")]
+        cells += [f"{grind[name][kind]:,.0f}" for kind in ("w1", "w2")] if grind else []
+        rows.append(cells)
     ratios = ["now / before, median of the rounds' pairs"]
     for kind in ("w1", "w2"):
         ratios += [f"{_paired(runs, kind, 'wall'):.2f}x", f"{_paired(runs, kind, 'cpu'):.2f}x"]
     ratios += ["", ""]
     if grind:
         ratios += [f"{grind['now'][kind] / grind['before'][kind]:.2f}x" for kind in ("w1", "w2")]
-    lines.append("| " + " | ".join(ratios) + " |")
+    lines += _table(head, [*rows, ratios])
     lines += ["", *_trace_table(runs, grind, rev)]
     if grind:
         lines += [
@@ -229,28 +226,36 @@ def section(runs: Runs, grind: dict[str, dict[str, float]], rev: str, rounds: in
 
 def _trace_table(runs: Runs, grind: dict[str, dict[str, float]], rev: str) -> list[str]:
     """The JSONL trace (to /dev/null) on against off, in the same process: issue 12's point 6."""
-    lines = [
-        f"The JSONL trace on (`JsonlTrace` to /dev/null; W1 {SIZES['w1_jsonl']:,} and W2 "
-        f"{SIZES['w2_jsonl']:,} transitions) against off, timed in the same worker processes (on / off: "
-        "median of the rounds' ratios):",
-        "",
-        "| | W1 on µs/transition (wall) | W1 on / off (wall) | W1 on / off (CPU) | W2 on µs/transition "
-        "| W2 on / off (wall) | W2 on / off (CPU) |"
-        + (" W1 on / off (instructions) | W2 |" if grind else ""),
-        "|---|---:|---:|---:|---:|---:|---:|" + ("---:|---:|" if grind else ""),
-    ]
+    head = ["", "W1 on µs/transition (wall)", "W1 on / off (wall)", "W1 on / off (CPU)"]
+    head += ["W2 on µs/transition", "W2 on / off (wall)", "W2 on / off (CPU)"]
+    head += ["W1 on / off (instructions)", "W2"] if grind else []
+    rows = []
     for name in ("before", "now"):
         got = runs[name]
-        cells = [name if name == "now" else f"before (`{rev}`)"]
+        cells = [_label(name, rev)]
         for kind in ("w1", "w2"):
             cells.append(f"{_median(got, kind + '_jsonl', 'wall') * 1e6:.2f}")
             for clock in ("wall", "cpu"):
                 ratio = statistics.median(r[kind + "_jsonl"][clock] / r[kind][clock] for r in got)
                 cells.append(f"{ratio:.2f}x")
-        if grind:
-            cells += [f"{grind[name][k + '_jsonl'] / grind[name][k]:.2f}x" for k in ("w1", "w2")]
-        lines.append("| " + " | ".join(cells) + " |")
-    return lines
+        cells += [f"{grind[name][k + '_jsonl'] / grind[name][k]:.2f}x" for k in ("w1", "w2")] if grind else []
+        rows.append(cells)
+    intro = (
+        f"The JSONL trace on (`JsonlTrace` to /dev/null; W1 {SIZES['w1_jsonl']:,} and W2 "
+        f"{SIZES['w2_jsonl']:,} transitions) against off, timed in the same worker processes (on / off: "
+        "median of the rounds' ratios):"
+    )
+    return [intro, "", *_table(head, rows)]
+
+
+def _label(name: str, rev: str) -> str:
+    return "now" if name == "now" else f"before (`{rev}`)"
+
+
+def _table(head: list[str], rows: list[list[str]]) -> list[str]:
+    """A Markdown table, the first column text and the others figures (right-aligned)."""
+    rule = "|---" + "|---:" * (len(head) - 1) + "|"
+    return ["| " + " | ".join(head) + " |", rule, *("| " + " | ".join(r) + " |" for r in rows)]
 
 
 def main(argv: list[str] | None = None) -> int:

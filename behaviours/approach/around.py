@@ -13,11 +13,13 @@ from behaviours.approach.navigate import (
     align_to_side,
     look_at_table,
     refresh,
+    turn_to,
     walk_to,
 )
 from behaviours.approach.sight import (
     RobotSighting,
     leader_behind_table,
+    named,
     own_colour,
     scan_for_robot,
     see_robot,
@@ -101,14 +103,19 @@ def go_to_opposite_side_of_table(
         spread: float = 0.7, along_tolerance: float = 0.03, out_tolerance: float = 0.03,
         yaw_tolerance: float = 0.05, tries: int = 4, legs: int = 4, length: float = 0.0,
         width: float = 0.0, step: float = 0.5, views: int = 6, min_points: int = 60,
-        in_line: float = 0.35) -> Outcome:
+        in_line: float = 0.35, table: list[float] | None = None, gate: float = 0.6) -> Outcome:
     """Face the table, see where the leader stands, walk round the table (`margin` m clear
     of its corners) to the other long side and square up `gap` m out from its middle; check
     that the leader now stands behind the table (its blob above the table's). `length` and
-    `width`: the table as the leader measured it (0: unknown), to tell a whole view."""
+    `width`: the table as the leader measured it (0: unknown), to tell a whole view. With a
+    `table` ([x, y], own start frame): the table seen nearest it, within `gate` m."""
     body = Body(ctx)
-    look = Look(pitch=pitch, spread=spread)
-    if not face_table(body, pitch):
+    named_at = named(table)
+    look = Look(pitch=pitch, spread=spread, target=named_at, gate=gate)
+    if named_at is not None:
+        x, y, _ = body.odometry()
+        turn_to(body, math.atan2(named_at[1] - y, named_at[0] - x))
+    elif not face_table(body, pitch):
         return Outcome("lost")
     own = own_colour(body)
     known = TableRect(True, length=length, width=width)

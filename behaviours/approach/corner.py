@@ -10,7 +10,10 @@ from __future__ import annotations
 
 import math
 
-from behaviours.approach.frames import Point, bearing_to, body_to_odom, distance
+import numpy as np
+
+from behaviours.approach.frames import Point, bearing_to, body_to_odom, distance, odom_to_body
+from behaviours.approach.sight import named, see_named_table
 from behaviours.body import Body
 from hfsm.primitive import Context, Outcome, primitive
 from sim.perception import Blob, find_table, pixel_bearing
@@ -34,13 +37,51 @@ def steer_bearing(body: Body, blob: Blob, corner: Point | None) -> float:
     return pixel_bearing(camera, blob.lowest_u, blob.lowest_row + 1.0)
 
 
+def near_row_distance(body: Body, near: float) -> float:
+    """Metres ahead on the floor seen `near` down the image, in its middle column."""
+    camera = body.camera("forward")
+    xs, _, ok = camera.to_plane(np.array([camera.width / 2]), np.array([near * camera.height]), 0.0)
+    return float(xs[0]) if bool(ok[0]) else 0.0
+
+
+def go_to_named_table(ctx: Context, body: Body, target: Point, gate: float, margin: float, near: float,
+                      pitch: float, period: float, gain: float) -> Outcome:
+    """go_to_table for the table seen nearest `target`: its nearest corner, held, until that
+    corner is as near as the floor `near` down the image."""
+    stop = near_row_distance(body, near)
+    corner: Point | None = None
+    try:
+        while True:
+            picked = see_named_table(body, 0.0, pitch, target, gate)
+            if picked is None:
+                return Outcome("lost")
+            target = picked.position
+            pose = body.odometry()
+            corner = min(picked.rect.corners(), key=lambda c: distance(c, corner if corner else pose[:2]))
+            bearing = bearing_to(pose, corner)
+            if odom_to_body(pose, corner)[0] <= stop:
+                return Outcome("at_corner", bearing=bearing)
+            half_band = math.atan(margin * body.camera().width / 2 / body.camera().fx)
+            forward = body.motion.forward_max if abs(bearing) <= half_band else 0.0
+            ctx.robot.set_velocity(forward, 0.0, gain * bearing)
+            ctx.wait(period)
+    finally:
+        ctx.robot.stop()
+
+
 @primitive(outcomes=["at_corner", "lost"], failures=["lost"], outputs=["bearing"], world="sim")
 def go_to_table(ctx: Context, *, margin: float = 0.2, near: float = 0.8, pitch: float = 0.3,
-                period: float = 0.25, gain: float = 1.0) -> Outcome:
+                period: float = 0.25, gain: float = 1.0, table: list[float] | None = None,
+                gate: float = 0.6) -> Outcome:
     """Walk to the nearest corner, keeping it within `margin` of the image centre; stop when
-    the table's lowest pixel is more than `near` down the image. `lost`: no table in view."""
+    the table's lowest pixel is more than `near` down the image. `lost`: no table in view.
+    With a `table` ([x, y], own start frame): the table seen nearest it within `gate` m, until
+    its nearest corner is as near as the floor `near` down the image."""
     body = Body(ctx)
     body.look(0.0, pitch)
+    target = named(table)
+    if target is not None:
+        return go_to_named_table(ctx, body, target, gate, margin, near, pitch, period, gain)
     corner: Point | None = None
     try:
         while True:

@@ -8,6 +8,7 @@ import numpy as np
 
 from behaviours.approach.frames import Side, from_table_frame, sides, table_frame
 from behaviours.approach.navigate import Look, Tolerance, align_to_side, look_at_table, walk_to
+from behaviours.approach.sight import named
 from behaviours.body import Body
 from hfsm.primitive import Context, Outcome, primitive
 from sim.perception.table_rect import TableRect, outline_points
@@ -34,11 +35,12 @@ def entry_point(rect: TableRect, body: Body, gap: float) -> tuple[float, float]:
 def position_to_centre_of_table_side(
         ctx: Context, *, gap: float = 0.35, pitch: float = 0.3, spread: float = 0.7,
         along_tolerance: float = 0.03, out_tolerance: float = 0.03, yaw_tolerance: float = 0.05,
-        tries: int = 4) -> Outcome:
+        tries: int = 4, table: list[float] | None = None, gate: float = 0.6) -> Outcome:
     """From near a corner, look left, ahead and right to find the longer side, join the line
-    `gap` metres out from it, turn the shoulders parallel to it and crab to its middle."""
+    `gap` metres out from it, turn the shoulders parallel to it and crab to its middle. With a
+    `table` ([x, y], own start frame): the table seen nearest it, within `gate` m."""
     body = Body(ctx)
-    look = Look(pitch=pitch, spread=spread)
+    look = Look(pitch=pitch, spread=spread, target=named(table), gate=gate)
     rect = look_at_table(body, None, look)
     if not rect.found:
         return Outcome("lost")

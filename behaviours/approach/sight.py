@@ -8,7 +8,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from behaviours.approach.frames import Point, body_to_odom
+from behaviours.approach.frames import Point, body_to_odom, distance
 from behaviours.body import Body
 from sim.perception import (
     NO_RECT,
@@ -22,6 +22,7 @@ from sim.perception import (
     fit_rect,
     is_below,
     outline_points,
+    pick_table,
     pixel_bearing,
     see_tables,
 )
@@ -69,6 +70,23 @@ def see_table(body: Body, yaw: float, pitch: float) -> TableSighting | None:
     bearing = pixel_bearing(camera, blob.centroid[0], blob.centroid[1])
     return TableSighting(blob, bearing, ground.distance if ground.found else math.inf,
                          ground.clipped)
+
+
+def named(table: Sequence[float] | None) -> Point | None:
+    """A machine's `table` param, [x, y] in the robot's own start frame ([] or None: any table)."""
+    return (float(table[0]), float(table[1])) if table else None
+
+
+def see_named_table(body: Body, yaw: float, pitch: float, target: Point, gate: float) -> TableSeen | None:
+    """Turn the head and look for the table seen nearest `target` (odometry frame), within
+    `gate` metres, among every table in view."""
+    body.look(clamp_yaw(yaw), pitch)
+    seen = see_tables([(body.image("forward"), body.camera("forward"))])
+    return pick_table(seen, target, gate)
+
+
+def ground_distance(body: Body, point: Point) -> float:
+    return distance(body.odometry()[:2], point)
 
 
 def look_around(body: Body, centre: float, spread: float, pitch: float, views: int

@@ -44,6 +44,7 @@ class PerceptionConfig:
     wall_min_run: int = 2              # wall pixels needed directly above a floor-wall boundary
     table_gap: float = 0.15            # top-face pieces nearer than this (m) are one table...
     table_max_size: tuple[float, float] = (1.2, 0.8)  # ...if together no longer/wider (m)
+    extent_gap: float = 0.3            # along a near edge, pixels past a gap this wide (m): another table
 
 
 DEFAULT_CONFIG = PerceptionConfig()

@@ -2,7 +2,10 @@
 which side is the longest"), with the head turned that way.
 
 Every table pixel is put on the plane of the top; pixels that are not on the top (rim, legs)
-land nearer to the camera, so the farthest point to that side is the top's corner.
+land nearer to the camera, so the farthest point to that side is the top's corner. Pixels past
+a gap of `extent_gap` along the edge, among all table pixels or among the top face's alone (a
+near table's legs and rim, projected on this plane, may fill the gap), belong to another table
+of the room, so the reach stops before it.
 """
 
 from __future__ import annotations
@@ -14,7 +17,7 @@ import numpy as np
 
 from sim.perception.blobs import clean_mask
 from sim.perception.camera import CameraModel
-from sim.perception.colour import table_mask
+from sim.perception.colour import table_mask, top_face
 from sim.perception.config import DEFAULT_CONFIG, PerceptionConfig
 
 
@@ -43,7 +46,18 @@ def side_extent(image: np.ndarray, camera: CameraModel, side: str, turn: float =
     if not ok.any():
         return NO_EXTENT
     sign = 1.0 if side == "left" else -1.0
-    along = -math.sin(turn) * xs + math.cos(turn) * ys
-    lateral = float(np.max(sign * along[ok]))
+    along = sign * (-math.sin(turn) * xs + math.cos(turn) * ys)
+    cuts = [cut for cut in (_before_gap(along[ok], cfg.extent_gap),
+                            _before_gap(along[ok & top_face(image, cfg=cfg)[vs, us]], cfg.extent_gap))
+            if cut is not None]
+    if cuts:
+        return SideExtent(True, lateral=max(0.0, min(cuts)), clipped=False)
     outer = mask[:, 0] if side == "left" else mask[:, -1]
-    return SideExtent(True, lateral=max(0.0, lateral), clipped=bool(outer.any()))
+    return SideExtent(True, lateral=max(0.0, float(np.max(along[ok]))), clipped=bool(outer.any()))
+
+
+def _before_gap(along: np.ndarray, gap: float) -> float | None:
+    """The last value before the first gap wider than `gap` on the positive side, if any."""
+    ordered = np.sort(along)
+    gaps = np.nonzero((np.diff(ordered) > gap) & (ordered[1:] > 0.0))[0]
+    return float(ordered[gaps[0]]) if gaps.size else None

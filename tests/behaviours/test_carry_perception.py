@@ -82,3 +82,23 @@ def test_no_table_no_edge() -> None:
         look(world, 0.0, 0.5)
         robot = world.robots["r1"]
         assert not near_edge(robot.image("down"), robot.camera_model("down")).found
+
+
+@pytest.mark.parametrize("other_x", [1.4, 1.6])
+def test_a_second_table_in_line_does_not_lengthen_the_side(other_x: float) -> None:
+    """Another table of the room further along the same line (issue 10): the reach to that side
+    is still the held table's, not the far end of the other one."""
+    scenario = at_table((0.0, 0.0, 0.0), None, table_x=0.0)
+    del scenario["table"]
+    scenario["tables"] = [{"x": 0.0}, {"x": other_x, "y": 0.0}]
+    with World(scenario_from_dict(scenario), 0) as world:
+        robot = world.robots["r1"]
+        look(world, 0.0, 0.5)
+        turn = near_edge(robot.image("down"), robot.camera_model("down")).turn
+        reach = {}
+        for side, yaw in (("left", 1.3), ("right", -1.3)):
+            look(world, yaw, 0.45)
+            reach[side] = side_extent(robot.image("forward"), robot.camera_model("forward"), side, turn)
+    assert reach["left"].lateral == pytest.approx(0.4, abs=0.02)
+    assert reach["right"].lateral == pytest.approx(0.4, abs=0.02)
+    assert not reach["right"].clipped
