@@ -61,12 +61,18 @@ def go_to_named_table(ctx: Context, body: Body, target: Point, gate: float, marg
             bearing = bearing_to(pose, corner)
             if odom_to_body(pose, corner)[0] <= stop:
                 return Outcome("at_corner", bearing=bearing)
-            half_band = math.atan(margin * body.camera().width / 2 / body.camera().fx)
-            forward = body.motion.forward_max if abs(bearing) <= half_band else 0.0
-            ctx.robot.set_velocity(forward, 0.0, gain * bearing)
-            ctx.wait(period)
+            _steer(ctx, body, bearing, margin, gain, period)
     finally:
         ctx.robot.stop()
+
+
+def _steer(ctx: Context, body: Body, bearing: float, margin: float, gain: float,
+           period: float) -> None:
+    """Turn towards `bearing`, walking only while it is within `margin` of the image centre."""
+    half_band = math.atan(margin * body.camera().width / 2 / body.camera().fx)
+    forward = body.motion.forward_max if abs(bearing) <= half_band else 0.0
+    ctx.robot.set_velocity(forward, 0.0, gain * bearing)
+    ctx.wait(period)
 
 
 @primitive(outcomes=["at_corner", "lost"], failures=["lost"], outputs=["bearing"], world="sim")
@@ -92,9 +98,6 @@ def go_to_table(ctx: Context, *, margin: float = 0.2, near: float = 0.8, pitch: 
             bearing = steer_bearing(body, blob, corner)
             if blob.lowest_row + 1 > near * body.camera().height:
                 return Outcome("at_corner", bearing=bearing)
-            half_band = math.atan(margin * body.camera().width / 2 / body.camera().fx)
-            forward = body.motion.forward_max if abs(bearing) <= half_band else 0.0
-            ctx.robot.set_velocity(forward, 0.0, gain * bearing)
-            ctx.wait(period)
+            _steer(ctx, body, bearing, margin, gain, period)
     finally:
         ctx.robot.stop()
