@@ -228,7 +228,7 @@ def _spans(u: np.ndarray, v: np.ndarray, w: int, h: int
     a = (sign[:, None] * dv)[:, None, :]
     y = np.arange(h, dtype=np.float64)[None, :, None]
     b = sign[:, None, None] * (du[:, None, :] * (y - v[:, None, :]) + (dv * u)[:, None, :])
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # inf: clipped below
         bound = b / a
     lo = np.max(np.where(a < 0, bound, -np.inf), axis=2)
     hi = np.min(np.where(a > 0, bound, np.inf), axis=2)
