@@ -24,7 +24,10 @@ class Finding:
     severity: Severity = field(default=Severity.ERROR, compare=False)
 
     def format(self) -> str:
-        return f"{self.file}:{self.line}:{self.col}: {self.severity.value}[{self.code}]: {self.message}"
+        """One line, whatever text the message quotes (a line break is shown as `\\n`)."""
+        text = f"{self.file}:{self.line}:{self.col}: {self.severity.value}[{self.code}]: {self.message}"
+        lines = text.splitlines()
+        return text if len(lines) == 1 else "\\n".join(lines)
 
     def as_error(self) -> Finding:
         return Finding(self.file, self.line, self.col, self.code, self.message, Severity.ERROR)

@@ -132,7 +132,8 @@ def _describe(value: Any) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, str):
-        return f"'{value}'"
+        lines = value.splitlines()
+        return f"'{value}'" if len(lines) <= 1 else f"'{lines[0]}…' (text of {len(lines)} lines)"
     if isinstance(value, dict):
         return "a mapping"
     if isinstance(value, list):

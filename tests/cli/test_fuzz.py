@@ -177,3 +177,8 @@ def test_random_valid_machines_run_to_an_end(text: str, agents: str) -> None:
         return
     assert code in (0, 1), err
     assert out.count(": ended in") + out.count(": did not end") == len(agents.split(","))
+
+
+def test_a_value_of_many_lines_is_quoted_on_one_line() -> None:
+    """Found by the mutation above: a block scalar where a number or a name belongs."""
+    check('outcomes: [done]\ntimer: >\n  look:\n    do: wait\nstates:\n  "a\\nb": {do: wait, on: {done: done}}\n')
