@@ -176,6 +176,9 @@ def _step(annotation: Any, part: int | str) -> Any:
         model = _only_model(annotation)
         if model is not None:  # `retry: Retry | None`: the keys are the model's
             return _step(model, part)
+        present = [a for a in get_args(annotation) if a is not type(None)]
+        if len(present) == 1:  # `tables: list[TableSpec] | None`: step into the list
+            return _step(present[0], part)
     return annotation
 
 

@@ -1,6 +1,7 @@
 from __future__ import annotations
 
 import pytest
+from pydantic import BaseModel, ConfigDict
 
 from hfsm.errors import UserError
 from hfsm.located import validate
@@ -54,3 +55,22 @@ def test_on_key_is_not_a_boolean() -> None:
     )
     model = validate(Machine, parse_text(text, "m.yaml"))
     assert list(model.states) == ["on", "off"]
+
+
+class _Item(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    difficulty: float = 0.5
+
+
+class _Items(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    items: list[_Item] | None = None
+
+
+def test_a_misspelt_key_in_an_optional_list_gets_a_suggestion() -> None:
+    """As a scenario's `tables: list[TableSpec] | None`: the keys are the items' own."""
+    with pytest.raises(UserError) as info:
+        validate(_Items, parse_text("items:\n  - {dificulty: 0.5}\n", "s.yaml"))
+    assert [f.format() for f in info.value.findings] == [
+        "s.yaml:2:6: error[E200]: unknown key 'dificulty'; did you mean 'difficulty'?"
+    ]
