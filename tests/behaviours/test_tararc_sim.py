@@ -10,12 +10,14 @@ import pytest
 from helpers import ROOT, hfsm_run
 
 TARARC = ROOT / "machines" / "tararc.yaml"
-TEAM = """
+TWO_TARGETS = """
 room: {width: 10.0, depth: 8.0}
 tables: []
 targets:
   - {id: north, x: 0.0, y: 2.5, difficulty: 0.4, priority: 1}
   - {id: south, x: 0.5, y: -2.5, difficulty: 0.7, priority: 2}
+"""
+TEAM = TWO_TARGETS + """
 robots:
   r1: {x: -2.0, y: 0.5, body: light}
   r2: {x: -1.0, y: 0.5, body: light}
@@ -76,12 +78,7 @@ def test_the_agent_falls_mid_move_and_a_member_takes_over(
     assert decided(lossy) == decided(clean)
 
 
-LENDING = """
-room: {width: 10.0, depth: 8.0}
-tables: []
-targets:
-  - {id: north, x: 0.0, y: 2.5, difficulty: 0.4, priority: 1}
-  - {id: south, x: 0.5, y: -2.5, difficulty: 0.7, priority: 2}
+LENDING = TWO_TARGETS + """
 robots:
   r1: {x: -2.0, y: 0.5, body: light}
   r2: {x: -1.0, y: 0.5, body: light}
