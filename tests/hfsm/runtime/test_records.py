@@ -9,8 +9,9 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from hfsm.runtime.agent import Agent, Event, Frame, Region
-from hfsm.runtime.records import Records, TextRecords, seconds_text
+from hfsm.runtime.records import Records, TextRecords
 from hfsm.runtime.states import RMachine, RRegion, RState
+from hfsm.runtime.ticktime import seconds_text
 from hfsm.trace import encode
 from hfsm.world import NullWorld
 
@@ -88,6 +89,7 @@ def test_text_records_are_the_dicts_bytes(
             records.enter(frame, frame.state)
             records.arc(frame, frame.state, Event(event), target)
             records.arc(frame, frame.state, Event(event), frame.state)
+            records.flush()  # the end of a tick
             clock.tick += 1
         written.append(sink.text)
     assert "".join(written[1]) == "".join(written[0])
