@@ -172,8 +172,17 @@ class TextRecords(Records):
         self.sink.write(record)
 
     def flush(self) -> None:
-        if self.kept:
-            self._write_kept()
+        kept = self.kept
+        if kept:  # _write_kept, without its call
+            tick = self.clock.tick
+            if tick < self.limit:
+                q, r = divmod(tick, self.period)
+                whole, decimals = self.table[r]
+                head = f'{{"t": {q * self.whole + whole}{decimals}'
+            else:
+                head = '{"t": ' + self.times.text(tick)
+            self.line(f"{head}{(_END + head).join(kept)}{_END}")
+            kept.clear()
         self.sink_flush()
 
     def end(self) -> None:
