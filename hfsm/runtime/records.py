@@ -100,7 +100,7 @@ class Prefix:
     def __init__(self, head: str, json: _Json) -> None:
         self.head = head  # `, "agent": …, "path": [… , ` (the path up to the state)
         self.json = json
-        self.enters: dict[RState, str] = {}  # state -> `…, "kind": "enter", "do": …` (no deadlines)
+        self.enters: dict[RState, tuple[str, str]] = {}  # state -> `…, "kind": "enter", "do": …`, ended
         self.arcs: dict[RState, dict[str, tuple[Any, tuple[str, str]]]] = {}  # event -> target, lines
         self.below: dict[RState | RRegion, Prefix] = {}
 
@@ -109,12 +109,13 @@ class Prefix:
         inner = self.below[where] = Prefix(f"{self.head}{self.json[name]}, ", self.json)
         return inner
 
-    def enter(self, state: RState) -> str:
+    def enter(self, state: RState) -> tuple[str, str]:
+        """A state's `enter` line without its deadlines and its end; and ended."""
         json = self.json
         do = f', "do": {json[state.do]}' if state.do else ""
         text = f'{self.head}{json[state.name]}], "kind": "enter"{do}'
-        self.enters[state] = text
-        return text
+        pair = self.enters[state] = text, text + _END
+        return pair
 
     def arc(self, state: RState, event: str, target: Any) -> tuple[Any, tuple[str, str]]:
         """The `event` and `exit` lines of an arc (kept, but for a barrier's, whose lines vary)."""
@@ -122,8 +123,8 @@ class Prefix:
         name, shown = json[event], json[target.name if target.__class__ is RState else target]
         path = f"{self.head}{json[state.name]}]"
         lines = (
-            f'{path}, "kind": "event", "event": {name}, "target": {shown}',
-            f'{path}, "kind": "exit", "event": {name}',
+            f'{path}, "kind": "event", "event": {name}, "target": {shown}' + _END,
+            f'{path}, "kind": "exit", "event": {name}' + _END,
         )
         if state.do != "barrier":
             self.arcs.setdefault(state, {})[event] = (target, lines)
@@ -140,25 +141,31 @@ class TextRecords(Records):
         self.sink_flush = sink.flush
         self.json = _Json()
         self.tops: dict[Agent, Prefix] = {}
-        self.kept: list[str] = []  # lines of this tick, without their `{"t": …` and `}\n`
+        self.kept: list[str] = []  # lines of this tick, without their `{"t": …`
         self.keep = self.kept.append
-        times = self.times = TickTimes(clock.dt)
-        self.period, self.whole, self.limit, self.table = times.period, times.whole, times.limit, times.table
+        self.times = TickTimes(clock.dt)
+        self.heads: list[str] = []  # `{"t": …` of the ticks from `first` on (as many as were quick)
+        self.first = 0
         self.shown: tuple[int | None, int | None] = (None, None)  # the last deadlines made, as text:
-        self.shown_text = ""
+        self.shown_text = _END
         self.state_deadline: int | None = None  # the same, for a quick look
         self.deadline: int | None = None
 
+    def _head(self, tick: int) -> str:
+        """`{"t": …` of `tick`, with those of the next ticks: twice as many as last time when the
+        ticks come one after the other (64 at most), else one."""
+        heads, first = self.heads, self.first
+        count = min(2 * len(heads), 64) if heads and tick == first + len(heads) else 1
+        self.heads, self.first = self.times.heads(tick, count), tick
+        return self.heads[0]
+
     def _write_kept(self) -> None:
-        """The lines kept, with the tick's time (TickTimes.text, without its call), to the sink."""
+        """The lines kept, with the tick's time, to the sink."""
         tick = self.clock.tick
-        if tick < self.limit:
-            q, r = divmod(tick, self.period)
-            whole, decimals = self.table[r]
-            head = f'{{"t": {q * self.whole + whole}{decimals}'
-        else:
-            head = '{"t": ' + self.times.text(tick)
-        self.line(f"{head}{(_END + head).join(self.kept)}{_END}")
+        at = tick - self.first
+        head = self.heads[at] if 0 <= at < len(self.heads) else self._head(tick)
+        self.line(head)
+        self.line(head.join(self.kept))
         self.kept.clear()
 
     def write(self, agent: Agent, path: list[str], kind: str, **extra: Any) -> None:
@@ -175,13 +182,10 @@ class TextRecords(Records):
         kept = self.kept
         if kept:  # _write_kept, without its call
             tick = self.clock.tick
-            if tick < self.limit:
-                q, r = divmod(tick, self.period)
-                whole, decimals = self.table[r]
-                head = f'{{"t": {q * self.whole + whole}{decimals}'
-            else:
-                head = '{"t": ' + self.times.text(tick)
-            self.line(f"{head}{(_END + head).join(kept)}{_END}")
+            at = tick - self.first
+            head = self.heads[at] if 0 <= at < len(self.heads) else self._head(tick)
+            self.line(head)
+            self.line(head.join(kept))
             kept.clear()
         self.sink_flush()
 
@@ -211,15 +215,18 @@ class TextRecords(Records):
         return top
 
     def _deadlines(self, frame: Frame) -> str:
-        """`, "deadline": …, "machine_deadline": …` (those set); the last one made is kept."""
+        """`, "deadline": …, "machine_deadline": …}\n` (those set); the last one made is kept."""
         shown = self.state_deadline, self.deadline = frame.state_deadline, frame.deadline
         if shown != self.shown:
             dt = self.clock.dt
             self.shown = shown
-            self.shown_text = "".join(
-                f', "{name}": {seconds_text(tick, dt)}'
-                for name, tick in zip(("deadline", "machine_deadline"), shown, strict=True)
-                if tick is not None
+            self.shown_text = (
+                "".join(
+                    f', "{name}": {seconds_text(tick, dt)}'
+                    for name, tick in zip(("deadline", "machine_deadline"), shown, strict=True)
+                    if tick is not None
+                )
+                + _END
             )
         return self.shown_text
 
@@ -230,11 +237,11 @@ class TextRecords(Records):
         prefix: Prefix = frame.text or self._prefix(frame)
         text = prefix.enters.get(state) or prefix.enter(state)
         if frame.deadline is None and frame.state_deadline is None:
-            self.keep(text)
+            self.keep(text[1])
         elif frame.deadline == self.deadline and frame.state_deadline == self.state_deadline:
-            self.keep(text + self.shown_text)
+            self.keep(text[0] + self.shown_text)
         else:
-            self.keep(text + self._deadlines(frame))
+            self.keep(text[0] + self._deadlines(frame))
 
     def arc(self, frame: Frame, state: RState, event: Event, target: RState | str | None) -> None:
         ends = (frame.text or self._prefix(frame)).arcs.get(state, _NONE).get(event.name)

@@ -43,6 +43,22 @@ class TickTimes:
         else:
             self.period, self.whole, self.limit, self.table = 1, 0, 0, []
 
+    def heads(self, tick: int, count: int) -> list[str]:
+        """`{"t": ` and the time of `tick` and of the ticks after it, `count` at most: as many as its
+        table's period holds after it (a whole second's text made once for them)."""
+        if tick >= self.limit:
+            return ['{"t": ' + seconds_text(tick, self.dt)]
+        q, r = divmod(tick, self.period)
+        base = q * self.whole
+        wholes: dict[int, str] = {}
+        out = []
+        for whole, decimals in self.table[r : min(self.period, r + count, r + self.limit - tick)]:
+            text = wholes.get(whole)
+            if text is None:
+                text = wholes[whole] = f'{{"t": {base + whole}'
+            out.append(text + decimals)
+        return out
+
     def text(self, tick: int) -> str:
         if tick < self.limit:
             q, r = divmod(tick, self.period)

@@ -34,3 +34,10 @@ def test_a_dt_of_few_decimals_has_a_short_table() -> None:
     assert (times.period, times.whole, len(times.table)) == (20, 1, 20)
     assert [times.text(k) for k in (0, 1, 20, 21, 2469)] == ["0.0", "0.05", "1.0", "1.05", "123.45"]
     assert TickTimes(1 / 120).table == []  # not 9 decimals: formatted each time
+
+
+@given(TICKS, DTS, st.integers(1, 70))
+def test_the_heads_of_the_next_ticks_hold_their_times(tick: int, dt: float, count: int) -> None:
+    heads = TickTimes(dt).heads(tick, count)
+    assert 1 <= len(heads) <= count
+    assert heads == ['{"t": ' + encode(round((tick + i) * dt, 9)) for i in range(len(heads))]
