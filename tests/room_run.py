@@ -1,6 +1,7 @@
 """Test-side runner for rooms of several tables (issue 10): each robot is told, as the `table`
 param of move_furniture, where the table its task names stands in its own start frame (from the
-start pose the scenario gives it, not the jittered truth), and the end is judged from the truth."""
+start pose the scenario gives it, not the jittered truth), and the end is judged from the truth.
+With `pairs`, each robot is also told its partner, the pair's channel and its role."""
 
 from __future__ import annotations
 
@@ -15,7 +16,7 @@ from hfsm.registry import Registry
 from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, run
 from sim import World, load_scenario
-from sim.scenario import Scenario
+from sim.scenario import FailureAt, Scenario
 
 ROOT = Path(__file__).resolve().parents[1]
 TOP = ROOT / "machines" / "move_furniture.yaml"
@@ -27,6 +28,9 @@ class RoomRun:
     roles: dict[str, str]
     score: dict[str, Any]
     moved: dict[str, float]  # each table's centre, metres from where it started
+    outputs: dict[str, dict[str, Any]]
+    ends: dict[str, list[float]]  # each table's centre at the end, room frame (the truth)
+    times: dict[str, float]  # when each robot's machine ended (or it failed)
 
 
 def in_start_frame(scenario: Scenario, robot: str, table: str) -> list[float]:
@@ -38,16 +42,41 @@ def in_start_frame(scenario: Scenario, robot: str, table: str) -> list[float]:
     return [math.cos(yaw) * dx + math.sin(yaw) * dy, -math.sin(yaw) * dx + math.cos(yaw) * dy]
 
 
-def run_room(scenario_name: str, seed: int, tasks: dict[str, str], max_time: float = 2400.0) -> RoomRun:
+def to_room(scenario: Scenario, robot: str, point: list[float]) -> list[float]:
+    """A point in `robot`'s start frame, in the room's frame (from the start pose the scenario gives)."""
+    start = scenario.robots[robot]
+    yaw = math.radians(start.yaw)
+    x, y = point
+    return [start.x + math.cos(yaw) * x - math.sin(yaw) * y, start.y + math.sin(yaw) * x + math.cos(yaw) * y]
+
+
+def pairs_told(pairs: dict[str, tuple[str, str]], channel: str = "") -> dict[str, dict[str, Any]]:
+    """For each table, (leader, assistant): each robot's partner, the pair's channel (the table's
+    name and `channel`) and its role, as a team would give them."""
+    told: dict[str, dict[str, Any]] = {}
+    for table, (leader, assistant) in pairs.items():
+        name = f"{table}{channel}_"
+        told[leader] = {"partner": assistant, "channel": name, "role": "leader"}
+        told[assistant] = {"partner": leader, "channel": name, "role": "assistant"}
+    return told
+
+
+def run_room(scenario_name: str, seed: int, tasks: dict[str, str], max_time: float = 2400.0, *,
+             told: dict[str, dict[str, Any]] | None = None, radio_loss: float = 0.0,
+             failures: dict[str, float] | None = None) -> RoomRun:
     """Run move_furniture, robot `r` told to move the table `tasks[r]` (robots not in `tasks`:
-    no table named)."""
+    no table named) and the params `told[r]`; `failures`: robot -> the second it fails."""
     reg = Registry.discover()
     loaded = load([TOP], registry=reg)
     root = loaded.roots[0]
     scenario = load_scenario(scenario_name)
-    agent_params = {robot: machine_params(root, {"table": in_start_frame(scenario, robot, table)})
+    if failures:
+        scenario = scenario.model_copy(update={"failures": [FailureAt(robot=r, at=t) for r, t in failures.items()]})
+    told = told or {}
+    agent_params = {robot: machine_params(root, {"table": in_start_frame(scenario, robot, table),
+                                                 **told.get(robot, {})})
                     for robot, table in tasks.items()}
-    world = World(scenario, seed)
+    world = World(scenario, seed, radio_loss=radio_loss)
     try:
         starts = [world.truth.table_pose(i)[:2] for i in range(len(world.truth.tables))]
         options = RunOptions(root.name, list(world.robots), machine_params(root, {}), seed, max_time,
@@ -60,4 +89,7 @@ def run_room(scenario_name: str, seed: int, tasks: dict[str, str], max_time: flo
     outcomes = {a: str(r.outcome) for a, r in result.agents.items()}
     roles = {a: str(r.outputs.get("role", "")) for a, r in result.agents.items()}
     moved = {t: math.dist(s, e) for t, s, e in zip(scenario.table_ids(), starts, ends, strict=True)}
-    return RoomRun(outcomes, roles, score, moved)
+    outputs = {a: dict(r.outputs) for a, r in result.agents.items()}
+    times = {a: float(r.time) for a, r in result.agents.items()}
+    at_end = {t: [round(float(v), 3) for v in e] for t, e in zip(scenario.table_ids(), ends, strict=True)}
+    return RoomRun(outcomes, roles, score, moved, outputs, at_end, times)
