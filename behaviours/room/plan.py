@@ -7,7 +7,7 @@ things the team learns over the radio, each a set that only grows: the robots lo
 (at a wall) and where survivors saw dropped tables. Robots that heard the same, in any order, agree.
 
     job = {"role": "leader" | "assistant" | "spare" | "idle", "table": "table1" | "",
-           "partner": "r2" | "", "channel": "table1.r1.r2." | "", "at": [x, y], "toward": [x, y],
+           "partner": "r2" | "", "channel": "table1_r1_r2_" | "", "at": [x, y], "toward": [x, y],
            "group": 0, "others": [...], "key": "k0"}
 
 `at` (where the table is believed to be) and `toward` are in the room's frame. A spare waits in its
@@ -112,7 +112,7 @@ def job_of(plan: Plan, me: str, lost: Sequence[str], done: Sequence[str],
         if len(others) == 0:
             return {**job, "role": "spare"}  # alone: waits for help
         leader, assistant = g["agent"], others[0]
-        channel = f"{table['id']}.{leader}.{assistant}."
+        channel = f"{table['id']}_{leader}_{assistant}_"
         if me == leader:
             return {**job, "role": "leader", "partner": assistant, "channel": channel}
         if me == assistant:

@@ -70,7 +70,7 @@ def test_the_plan_pairs_robots_and_keeps_spares() -> None:
     assert {r: (j["role"], j["table"]) for r, j in jobs.items() if j} == {
         "r1": ("leader", "table1"), "r2": ("assistant", "table1"), "r3": ("spare", "table1"),
         "r4": ("leader", "table2"), "r5": ("assistant", "table2"), "r6": ("spare", "table2")}
-    assert jobs["r1"]["channel"] == jobs["r2"]["channel"] == "table1.r1.r2."
+    assert jobs["r1"]["channel"] == jobs["r2"]["channel"] == "table1_r1_r2_"
 
 
 def test_a_spare_replaces_a_lost_assistant_and_7a_a_lost_leader() -> None:
@@ -89,7 +89,7 @@ def test_a_short_group_borrows_from_a_finished_table_and_the_table_where_it_was_
     helper = job_of(plan, "r3", ["r2"], ["table2"], {"table1": [-2.0, 0.3]})
     assert job is not None and helper is not None
     assert (job["role"], job["partner"], job["at"]) == ("leader", "r3", [-2.0, 0.3])
-    assert (helper["role"], helper["channel"]) == ("assistant", "table1.r1.r3.")
+    assert (helper["role"], helper["channel"]) == ("assistant", "table1_r1_r3_")
 
 
 def test_the_same_news_in_any_order_gives_the_same_jobs() -> None:
