@@ -4,13 +4,15 @@ assists) and its spares; and what each robot does after losses and finished tabl
 A plan is `behaviours.tararc.plan`'s (groups with their tasks, start positions, beliefs) plus the
 tables and their claimed walls. What a robot does is a pure function of the plan and of three
 things the team learns over the radio, each a set that only grows: the robots lost, the tables done
-(at a wall) and where survivors saw dropped tables. Robots that heard the same, in any order, agree.
+(at a wall), where survivors saw dropped tables and the pairings spent. Robots that heard the same, in any order, agree.
 
     job = {"role": "leader" | "assistant" | "spare" | "idle", "table": "table1" | "",
            "partner": "r2" | "", "channel": "table1_r1_r2_" | "", "at": [x, y], "toward": [x, y],
            "group": 0, "others": [...], "key": "k0"}
 
-`at` (where the table is believed to be) and `toward` are in the room's frame. A spare waits in its
+`at` (where the table is believed to be) and `toward` are in the room's frame. A robot whose carry
+ended without its table at a wall says the pairing is spent (news too); once both robots of a pair
+said so, the same pair tries again on a new channel (`channel_of`). A spare waits in its
 group until help makes it an assistant; `idle` robots' tables are done (or they are in no group with
 work): they may be lent to a group left short (below).
 """
@@ -91,8 +93,23 @@ def key_of(lost: Sequence[str], done: Sequence[str]) -> str:
     return "k" + hashlib.sha1(text.encode()).hexdigest()[:8]
 
 
+def channel_of(table: str, leader: str, assistant: str, spent: Sequence[str]) -> str:
+    """The prefix of every message and barrier name of a pairing: the table and the pair, and after
+    k pairings of the same pair on the same table that both robots gave up (`spent` holds
+    "CHANNEL/ROBOT" for each robot whose carry on CHANNEL ended without the table at a wall), the
+    number k: the pair tries again on a new channel only once both know the last try is over."""
+    base = f"{table}_{leader}_{assistant}_"
+    by: dict[str, set[str]] = {}
+    for entry in set(spent):
+        channel, _, robot = entry.rpartition("/")
+        if channel.startswith(base):
+            by.setdefault(channel, set()).add(robot)
+    tries = sum(1 for robots in by.values() if {leader, assistant} <= robots)
+    return f"{base}{tries}_" if tries else base
+
+
 def job_of(plan: Plan, me: str, lost: Sequence[str], done: Sequence[str],
-           seen: Mapping[str, Sequence[float]]) -> dict[str, Any] | None:
+           seen: Mapping[str, Sequence[float]], spent: Sequence[str] = ()) -> dict[str, Any] | None:
     """What robot `me` does; None when it is among the lost."""
     if me in set(lost):
         return None
@@ -112,7 +129,7 @@ def job_of(plan: Plan, me: str, lost: Sequence[str], done: Sequence[str],
         if len(others) == 0:
             return {**job, "role": "spare"}  # alone: waits for help
         leader, assistant = g["agent"], others[0]
-        channel = f"{table['id']}_{leader}_{assistant}_"
+        channel = channel_of(table["id"], leader, assistant, spent)
         if me == leader:
             return {**job, "role": "leader", "partner": assistant, "channel": channel}
         if me == assistant:

@@ -96,3 +96,13 @@ def test_the_same_news_in_any_order_gives_the_same_jobs() -> None:
     plan = make_room_plan(SIX, TASKS, ROOM)
     for lost in itertools.permutations(["r2", "r4"]):
         assert [g["members"] for g in groups_after(plan, list(lost), [])] == [["r1", "r3"], ["r5", "r6"]]
+
+
+def test_a_pair_tries_again_on_a_new_channel_once_both_gave_up() -> None:
+    plan = make_room_plan(FOUR, TASKS, ROOM)
+    first = "table1_r1_r2_"
+    assert job_of(plan, "r1", [], [], {}, [f"{first}/r1"])["channel"] == first  # r2 still carries
+    again = job_of(plan, "r1", [], [], {}, [f"{first}/r1", f"{first}/r2"])
+    assert again["channel"] == "table1_r1_r2_1_"
+    third = job_of(plan, "r2", [], [], {}, [f"{first}/r1", f"{first}/r2", "table1_r1_r2_1_/r1", "table1_r1_r2_1_/r2"])
+    assert third["channel"] == "table1_r1_r2_2_"
