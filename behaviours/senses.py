@@ -85,7 +85,8 @@ class Senses:
 
     def tables_in_view(self) -> list[dict[str, Any]]:
         seen = see_tables([(self.image(), self.robot.camera_model("forward"))])
-        return [{"x": round(float(t.rect.x), 6), "y": round(float(t.rect.y), 6), "heading": _degrees(t.rect.axis),
+        return [{"x": round(float(t.rect.x), 6), "y": round(float(t.rect.y), 6),
+                 "heading": _degrees(t.rect.axis),
                  "length": round(float(t.rect.length), 6), "width": round(float(t.rect.width), 6),
                  "clipped": bool(t.clipped)} for t in seen]
 

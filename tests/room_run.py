@@ -31,6 +31,7 @@ class RoomRun:
     outputs: dict[str, dict[str, Any]]
     ends: dict[str, list[float]]  # each table's centre at the end, room frame (the truth)
     times: dict[str, float]  # when each robot's machine ended (or it failed)
+    holding: dict[str, bool]  # whose hands hold a load at the end
 
 
 def in_start_frame(scenario: Scenario, robot: str, table: str) -> list[float]:
@@ -84,6 +85,7 @@ def run_room(scenario_name: str, seed: int, tasks: dict[str, str], max_time: flo
         result = run(Program(loaded.machines, reg, 0.05), SimWorld(world), options)
         ends = [world.truth.table_pose(i)[:2] for i in range(len(world.truth.tables))]
         score = world.score()
+        holding = {name: bool(robot.holding()) for name, robot in world.robots.items()}
     finally:
         world.close()
     outcomes = {a: str(r.outcome) for a, r in result.agents.items()}
@@ -92,4 +94,54 @@ def run_room(scenario_name: str, seed: int, tasks: dict[str, str], max_time: flo
     outputs = {a: dict(r.outputs) for a, r in result.agents.items()}
     times = {a: float(r.time) for a, r in result.agents.items()}
     at_end = {t: [round(float(v), 3) for v in e] for t, e in zip(scenario.table_ids(), ends, strict=True)}
-    return RoomRun(outcomes, roles, score, moved, outputs, at_end, times)
+    return RoomRun(outcomes, roles, score, moved, outputs, at_end, times, holding)
+
+
+PAIRS = {  # scenario -> table -> (leader, assistant), as a team would form them
+    "room_2_tables": {"table1": ("r1", "r2"), "table2": ("r3", "r4")},
+    "room_3_pairs": {"table1": ("r1", "r2"), "table2": ("r3", "r4"), "table3": ("r5", "r6")},
+}
+
+
+def run_pairs(scenario: str, seed: int, *, radio_loss: float = 0.0, failures: dict[str, float] | None = None,
+              max_time: float = 2400.0) -> RoomRun:
+    """Every pair of PAIRS[scenario] told its table, partner, channel and roles."""
+    pairs = PAIRS[scenario]
+    tasks = {robot: table for table, pair in pairs.items() for robot in pair}
+    return run_room(scenario, seed, tasks, max_time, told=pairs_told(pairs), radio_loss=radio_loss,
+                    failures=failures)
+
+
+def main(argv: list[str] | None = None) -> None:
+    """One Markdown row per seed: `python tests/room_run.py room_2_tables 0-9 [--loss 0.3]`."""
+    import argparse
+    import time
+
+    parser = argparse.ArgumentParser(description=main.__doc__)
+    parser.add_argument("scenario", choices=sorted(PAIRS))
+    parser.add_argument("seeds", help="first-last")
+    parser.add_argument("--loss", type=float, default=0.0)
+    parser.add_argument("--fail", action="append", default=[], help="ROBOT@SECONDS")
+    args = parser.parse_args(argv)
+    first, _, last = args.seeds.partition("-")
+    failures = {r: float(t) for r, _, t in (f.partition("@") for f in args.fail)}
+    print("| seed | outcomes | roles | wall gaps (m) | dropped | robot-robot | sim s | wall s |")
+    print("|---|---|---|---|---|---|---|---|")
+    cleared = 0
+    seeds = range(int(first), int(last or first) + 1)
+    for seed in seeds:
+        start = time.monotonic()
+        room = run_pairs(args.scenario, seed, radio_loss=args.loss, failures=failures)
+        score = room.score
+        ok = bool(score["success"])
+        cleared += ok
+        outcomes = " ".join(room.outcomes[r] for r in sorted(room.outcomes))
+        roles = " ".join(room.roles[r][:1].upper() or "-" for r in sorted(room.roles))
+        gaps = " / ".join(f"{d:.3f}" for d in score["table_wall_distances"])
+        print(f"| {seed} | {outcomes} | {roles} | {gaps} | {score['dropped']} | {score['robot_collisions']} "
+              f"| {max(room.times.values()):.1f} | {time.monotonic() - start:.0f} |", flush=True)
+    print(f"\n{cleared} of {len(seeds)} rooms cleared (every table at a wall, no drop, no robot-robot collision)")
+
+
+if __name__ == "__main__":
+    main()

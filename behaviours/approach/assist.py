@@ -43,7 +43,8 @@ def clear_way(ctx: Context, *, leader_bearing: float = 0.0, leader_distance: flo
     `leader_colour` (>= 0), only a robot of that colour is the leader."""
     body = Body(ctx)
     table = see_table(body, 0.0, pitch)
-    if table is not None and leader_distance >= 0 and leader_behind_table(body, pitch, own_colour(body), leader_colour):
+    both_seen = leader_distance >= 0 and table is not None
+    if both_seen and leader_behind_table(body, pitch, own_colour(body), leader_colour):
         return Outcome("cleared", moved=0.0)
     pose = body.odometry()
     table_point = body_to_odom(pose, (table.distance if table else 1.0, 0.0))

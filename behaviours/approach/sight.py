@@ -136,7 +136,8 @@ def other_robot(i: int, own: int, only: int = -1) -> bool:
 def see_robot(body: Body, yaw: float, pitch: float, own: int, only: int = -1) -> RobotSighting:
     """The largest blob of another robot's colour (of colour `only` if >= 0) in this view, if any."""
     body.look(clamp_yaw(yaw), pitch)
-    blobs = [b for i, b in enumerate(find_robots(body.image("forward"))) if other_robot(i, own, only) and b.found]
+    robots = enumerate(find_robots(body.image("forward")))
+    blobs = [b for i, b in robots if other_robot(i, own, only) and b.found]
     if not blobs:
         return NO_ROBOT
     blob = max(blobs, key=lambda b: b.area_px)
@@ -149,7 +150,8 @@ def see_robot(body: Body, yaw: float, pitch: float, own: int, only: int = -1) ->
                          ground.distance, blob)
 
 
-def scan_for_robot(body: Body, yaws: Sequence[float], pitch: float, own: int, only: int = -1) -> RobotSighting:
+def scan_for_robot(body: Body, yaws: Sequence[float], pitch: float, own: int,
+                   only: int = -1) -> RobotSighting:
     for yaw in yaws:
         seen = see_robot(body, yaw, pitch, own, only)
         if seen.found:
