@@ -68,6 +68,6 @@ SIM_INPUTS: Mapping[str, InputSpec] = {
             "where the robot was told it was placed, {x, y: metres, yaw: degrees} in the room's frame: "
             "the scenario's start pose as written, not the jittered truth (in.pose is odometry from there)",
         ),
-        InputSpec("room", "dict", "the room the team is told it works in, {width, depth: metres}, centred on 0"),
+        InputSpec("room", "dict", "the room the team is told it works in: {width, depth: metres}, centre 0"),
     )
 }

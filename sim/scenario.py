@@ -148,7 +148,8 @@ class Scenario(Strict):
         return out
 
     def told_start(self, name: str) -> dict[str, float]:
-        """Where robot `name` is told it was placed: its start as written (degrees), not the jittered truth."""
+        """Where robot `name` is told it was placed: its start as written (yaw in degrees), not the
+        jittered truth."""
         start = self.robots[name]
         return {"x": start.x, "y": start.y, "yaw": start.yaw}
 

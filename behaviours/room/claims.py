@@ -97,7 +97,8 @@ def crossings(ways: Sequence[Way], tables: Sequence[Mapping[str, Any]], reach: f
     return count
 
 
-def claim_walls(tables: Sequence[Mapping[str, Any]], width: float, depth: float, reach: float = 0.5) -> dict[str, Way]:
+def claim_walls(tables: Sequence[Mapping[str, Any]], width: float, depth: float,
+                reach: float = 0.5) -> dict[str, Way]:
     """Every table's way to a wall: the choice with the fewest crossings, then the least travel, then
     the first in table order (+1 before -1). Up to 2^K choices: K is at most 5 here."""
     ordered = sorted(tables, key=lambda t: str(t["id"]))

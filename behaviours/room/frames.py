@@ -24,7 +24,8 @@ def to_local(start: Mapping[str, Any], point: Sequence[float]) -> list[float]:
     """A point of the room's frame in the robot's start frame."""
     yaw = math.radians(float(start["yaw"]))
     dx, dy = float(point[0]) - float(start["x"]), float(point[1]) - float(start["y"])
-    return [round(math.cos(yaw) * dx + math.sin(yaw) * dy, 6), round(-math.sin(yaw) * dx + math.cos(yaw) * dy, 6)]
+    return [round(math.cos(yaw) * dx + math.sin(yaw) * dy, 6),
+            round(-math.sin(yaw) * dx + math.cos(yaw) * dy, 6)]
 
 
 def ahead(pose: Mapping[str, Any], distance: float) -> list[float]:

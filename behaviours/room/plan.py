@@ -4,7 +4,8 @@ assists) and its spares; and what each robot does after losses and finished tabl
 A plan is `behaviours.tararc.plan`'s (groups with their tasks, start positions, beliefs) plus the
 tables and their claimed walls. What a robot does is a pure function of the plan and of three
 things the team learns over the radio, each a set that only grows: the robots lost, the tables done
-(at a wall), where survivors saw dropped tables and the pairings spent. Robots that heard the same, in any order, agree.
+(at a wall), where survivors saw dropped tables and the pairings spent. Robots that heard the
+same, in any order, agree.
 
     job = {"role": "leader" | "assistant" | "spare" | "idle", "table": "table1" | "",
            "partner": "r2" | "", "channel": "table1_r1_r2_" | "", "at": [x, y], "toward": [x, y],
@@ -39,7 +40,8 @@ def tables_of(tasks: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
         if t.get("kind", "table") != "table":
             continue
         length, width = float(t.get("length", 0.8)), float(t.get("width", 0.5))
-        out.append({"id": str(t["id"]), "x": float(t["x"]), "y": float(t["y"]), "yaw": float(t.get("yaw", 0.0)),
+        out.append({"id": str(t["id"]), "x": float(t["x"]), "y": float(t["y"]),
+                    "yaw": float(t.get("yaw", 0.0)),
                     "length": length, "width": width, "difficulty": difficulty_of(length, width),
                     "priority": int(t.get("priority", i + 1))})
     return out
@@ -75,7 +77,8 @@ def groups_after(plan: Plan, lost: Sequence[str], done: Sequence[str]) -> list[d
             free = [(g, m) for g in groups if g["task"]["id"] in finished for m in g["members"]]
             if not free:
                 break
-            here = _where(plan, needy["agent"]) if needy["agent"] else (needy["task"]["x"], needy["task"]["y"])
+            task = needy["task"]
+            here = _where(plan, needy["agent"]) if needy["agent"] else (task["x"], task["y"])
             giver, robot = min(free, key=lambda gm: (math.dist(_where(plan, gm[1]), here), gm[1]))
             giver["members"] = [m for m in giver["members"] if m != robot]
             if giver["agent"] == robot:

@@ -21,15 +21,17 @@ def room_allocate(ctx: Context, *, mine: dict[str, Any], heard: dict[str, Any], 
     """TARARC's groups, one per table of `tasks` (difficulty from the table's size), agents competing
     for the tables, and each table's claimed wall (corridors `reach` m wider than the table each side)."""
     states = {**heard, ctx.agent: mine}
-    return Outcome("allocated", plan=make_room_plan(states, tasks, room, coefficients_from(coefficients), reach))
+    plan = make_room_plan(states, tasks, room, coefficients_from(coefficients), reach)
+    return Outcome("allocated", plan=plan)
 
 
 @primitive(outcomes=["assigned", "excluded"], outputs=["job"])
 def room_assign(ctx: Context, *, plan: dict[str, Any], lost: list[Any], done: list[Any], seen: dict[str, Any],
                 start: dict[str, Any], spent: list[Any] | None = None) -> Outcome:
-    """This robot's job after the robots `lost` and the tables `done`, a dropped table where a survivor
-    `seen` it, on a channel no `spent` pairing used; `table` and `toward` in its own start frame (from `start`, where it was told it was
-    placed). `excluded` when a teammate took this robot for lost."""
+    """This robot's job after the robots `lost` and the tables `done`, a dropped table where a
+    survivor `seen` it, on a channel no `spent` pairing used; `table` and `toward` in its own start
+    frame (from `start`, where it was told it was placed). `excluded` when a teammate took this
+    robot for lost."""
     where = {str(t): [float(v["x"]), float(v["y"])] for t, v in seen.items()}
     job = job_of(plan, ctx.agent, [str(r) for r in lost], [str(t) for t in done], where,
                  [str(c) for c in spent or []])
@@ -41,14 +43,16 @@ def room_assign(ctx: Context, *, plan: dict[str, Any], lost: list[Any], done: li
 
 
 @primitive(outcomes=["located"], outputs=["seen"])
-def room_locate(ctx: Context, *, seen: dict[str, Any], table: str, start: dict[str, Any], pose: dict[str, Any],
+def room_locate(ctx: Context, *, seen: dict[str, Any], table: str, start: dict[str, Any],
+                pose: dict[str, Any],
                 table_at: list[Any] | None = None, reach: float = 0.55) -> Outcome:
     """Where this robot, left with a dropped `table`, believes it is, in the room's frame, added to
     `seen`: `table_at` (its own estimate, start frame) when it has one, else `reach` m ahead of it
     (it faced the table it held)."""
     local = [float(v) for v in table_at] if table_at else ahead(pose, reach)
     x, y = to_room(start, local)
-    return Outcome("located", seen={**seen, table: {"x": x, "y": y, "t": round(ctx.time, 6), "by": ctx.agent}})
+    sight = {"x": x, "y": y, "t": round(ctx.time, 6), "by": ctx.agent}
+    return Outcome("located", seen={**seen, table: sight})
 
 
 def _newer(a: dict[str, Any], b: dict[str, Any]) -> bool:
