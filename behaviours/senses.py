@@ -29,7 +29,7 @@ class Senses:
     """One robot's inputs at one tick (a new tick starts afresh)."""
 
     def __init__(self, robot: Robot | LightRobot, own_colour: int,
-                 tasks: list[dict[str, Any]] | None = None) -> None:
+                 tasks: list[dict[str, Any]] | None = None, told: dict[str, Any] | None = None) -> None:
         self.own_colour = own_colour  # the index of its own body colour: it never sees itself
         self.tasks = tasks or []
         self._tick = -1
@@ -39,6 +39,8 @@ class Senses:
             "pose": lambda: self.pose(robot),
             "battery": robot.battery,
             "tasks": lambda: self.tasks,
+            "start": lambda: (told or {}).get("start"),
+            "room": lambda: (told or {}).get("room"),
         }
         if isinstance(robot, LightRobot):  # no cameras, no hands: what they would sense is null
             self.readers.update(dict.fromkeys(LIGHT_BLIND, lambda: None), holding=lambda: False)
