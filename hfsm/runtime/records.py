@@ -50,8 +50,9 @@ class Records:
         """The end of a tick that wrote something (or of the run): the sink's flush."""
         self.sink.flush()
 
-    def end(self) -> None:
-        """The run ended: nothing is kept back (the sink is closed by whoever opened it)."""
+    def drain(self) -> None:
+        """Nothing kept back: the lines kept go to the sink, without its flush (the start's tick, whose
+        flush is the next tick's, and the end of the run, whose sink is closed by whoever opened it)."""
 
     def enter(self, frame: Frame, state: RState) -> None:
         """A state entered: its callee, when the state's and the machine's timers fire (seconds),
@@ -189,7 +190,7 @@ class TextRecords(Records):
             kept.clear()
         self.sink_flush()
 
-    def end(self) -> None:
+    def drain(self) -> None:
         if self.kept:
             self._write_kept()
 

@@ -51,7 +51,7 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
             _stop_all(engine, agents)
     finally:
         if engine.records is not None:
-            engine.records.end()
+            engine.records.drain()
     if not error and all_failed(agents):
         error = "every agent failed"
     results = {a.name: a.result or AgentResult(None, {}, engine.time) for a in agents}
@@ -92,13 +92,14 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
 
 
 def _start(engine: Engine, top: RMachine, options: RunOptions) -> None:
-    """Every agent not failed at 0 s starts its top machine: tick 0, flushed as every tick is."""
+    """Every agent not failed at 0 s starts its top machine (tick 0, whose records the sink gets with
+    the next tick's)."""
     for agent in engine.agents:
         if agent.result is None:
             agent.entries = 0
             engine.start(agent, top, options.agent_params.get(agent.name, options.params))
     if engine.records is not None:
-        engine.records.flush()
+        engine.records.drain()
 
 
 def _stopped(engine: Engine, following: int | None, last: int, max_time: float) -> str:
