@@ -59,7 +59,15 @@ SIM_INPUTS: Mapping[str, InputSpec] = {
             "list",
             "the tasks the team is given, in scenario order, tables then targets: [{id, kind: "
             "table|target, x, y: metres in the room's frame (a table's start centre), difficulty: "
-            "0..1, priority: 1 first}]",
+            "0..1, priority: 1 first; a table also has yaw: degrees of its long side, length, "
+            "width: metres}]",
         ),
+        InputSpec(
+            "start",
+            "dict",
+            "where the robot was told it was placed, {x, y: metres, yaw: degrees} in the room's frame: "
+            "the scenario's start pose as written, not the jittered truth (in.pose is odometry from there)",
+        ),
+        InputSpec("room", "dict", "the room the team is told it works in: {width, depth: metres}, centre 0"),
     )
 }

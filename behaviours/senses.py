@@ -18,7 +18,7 @@ from sim.perception import Blob, blob_ground, find_robots, find_table, pixel_bea
 
 
 def _degrees(radians: float) -> float:
-    return round(math.degrees(radians), 6)
+    return round(math.degrees(float(radians)), 6)
 
 
 LIGHT_BLIND = ("table_in_view", "table_bearing", "table_distance", "tables_in_view", "partner_in_view",
@@ -29,7 +29,7 @@ class Senses:
     """One robot's inputs at one tick (a new tick starts afresh)."""
 
     def __init__(self, robot: Robot | LightRobot, own_colour: int,
-                 tasks: list[dict[str, Any]] | None = None) -> None:
+                 tasks: list[dict[str, Any]] | None = None, told: dict[str, Any] | None = None) -> None:
         self.own_colour = own_colour  # the index of its own body colour: it never sees itself
         self.tasks = tasks or []
         self._tick = -1
@@ -39,6 +39,8 @@ class Senses:
             "pose": lambda: self.pose(robot),
             "battery": robot.battery,
             "tasks": lambda: self.tasks,
+            "start": lambda: (told or {}).get("start"),
+            "room": lambda: (told or {}).get("room"),
         }
         if isinstance(robot, LightRobot):  # no cameras, no hands: what they would sense is null
             self.readers.update(dict.fromkeys(LIGHT_BLIND, lambda: None), holding=lambda: False)
@@ -83,9 +85,10 @@ class Senses:
 
     def tables_in_view(self) -> list[dict[str, Any]]:
         seen = see_tables([(self.image(), self.robot.camera_model("forward"))])
-        return [{"x": round(t.rect.x, 6), "y": round(t.rect.y, 6), "heading": _degrees(t.rect.axis),
-                 "length": round(t.rect.length, 6), "width": round(t.rect.width, 6),
-                 "clipped": t.clipped} for t in seen]
+        return [{"x": round(float(t.rect.x), 6), "y": round(float(t.rect.y), 6),
+                 "heading": _degrees(t.rect.axis),
+                 "length": round(float(t.rect.length), 6), "width": round(float(t.rect.width), 6),
+                 "clipped": bool(t.clipped)} for t in seen]
 
     def partner_in_view(self) -> bool:
         blobs = find_robots(self.image())
@@ -94,4 +97,4 @@ class Senses:
     @staticmethod
     def pose(robot: Robot | LightRobot) -> dict[str, float]:
         x, y, yaw = robot.odometry()
-        return {"x": round(x, 6), "y": round(y, 6), "yaw": _degrees(yaw)}
+        return {"x": round(float(x), 6), "y": round(float(y), 6), "yaw": _degrees(yaw)}

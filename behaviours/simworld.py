@@ -6,6 +6,7 @@ through the sim's radio (latency, loss) into the engine's mailboxes.
 
 from __future__ import annotations
 
+import math
 import sys
 from collections.abc import Mapping, Sequence
 from pathlib import Path
@@ -26,6 +27,7 @@ from sim.team import AnyRobot
 SCORE_KEYS = ("success", "table_wall_distance", "dropped", "robot_collisions", "time")  # table_to_wall
 MANY_TABLES_KEYS = ("table_wall_distances",)  # table_to_wall in a room of several tables
 ROBOT_KEYS = ("robot_collisions", "time")  # a scenario with no task
+SUCCESS_DISTANCE = 0.15  # metres: a table this near a wall is at it (sim.scorer's default)
 
 
 def load_scenario(name_or_path: str) -> tuple[Scenario, str]:
@@ -86,6 +88,8 @@ class SimWorld:
         self._senses: dict[str, Senses] = {}
         self._radio_delay: dict[str, float] = {}  # receiver -> what its latest message took
         self._failures = world.scenario.failure_times(world.seed)
+        truth = world.truth
+        self._table_starts = [truth.table_pose(i)[:2] for i in range(len(truth.tables))]
 
     @property
     def outputs(self) -> list[Path]:
@@ -112,7 +116,10 @@ class SimWorld:
         senses = self._senses.get(agent)
         if senses is None:
             own = list(self.world.robots).index(agent)  # robots wear the colours in scenario order
-            senses = self._senses[agent] = Senses(self.world.robots[agent], own, self.world.scenario.tasks())
+            scenario = self.world.scenario
+            told = {"start": scenario.told_start(agent),
+                    "room": {"width": scenario.room.width, "depth": scenario.room.depth}}
+            senses = self._senses[agent] = Senses(self.world.robots[agent], own, scenario.tasks(), told)
         return senses.read(name, tick)
 
     def post(self, message: Message) -> None:
@@ -158,9 +165,24 @@ class SimWorld:
     def fail(self, agent: str) -> None:
         self.world.fail(agent)
 
+    def _tables(self) -> dict[str, dict[str, float]]:
+        """Each table's gap to the nearest wall and how far it moved (the scorer's truth, for people)."""
+        truth, ids = self.world.truth, self.world.scenario.table_ids()
+        out = {}
+        for i, (name, start) in enumerate(zip(ids, self._table_starts, strict=True)):
+            x, y = truth.table_pose(i)[:2]
+            out[name] = {"wall_distance": round(truth.table_wall_distance(i), 3),
+                         "moved": round(math.dist((x, y), start), 3)}
+        return out
+
     def _progress(self) -> None:
         minutes, seconds = divmod(self.world.time, 60)
         line = f"simulated {int(minutes):02d}:{seconds:04.1f}"
+        if len(self._table_starts) > 1:
+            tables = self._tables()
+            at_wall = sum(t["wall_distance"] <= SUCCESS_DISTANCE for t in tables.values())
+            failed = sum(r.failed for r in self.world.robots.values())
+            line += f"  tables at a wall {at_wall}/{len(tables)}  robots failed {failed}"
         end = "\r" if sys.stderr.isatty() else "\n"
         print(line, end=end, file=sys.stderr, flush=True)
 
@@ -172,7 +194,10 @@ class SimWorld:
         if task is None:
             return {"score": {k: score[k] for k in ROBOT_KEYS}}
         keys = [*SCORE_KEYS, *(k for k in MANY_TABLES_KEYS if k in score)]
-        return {"task": task, "score": {k: score[k] for k in keys}}
+        out: dict[str, Any] = {"task": task, "score": {k: score[k] for k in keys}}
+        if len(self._table_starts) > 1:
+            out["tables"] = self._tables()
+        return out
 
     def close(self) -> list[str]:
         if self.progress_every and sys.stderr.isatty():

@@ -138,8 +138,20 @@ class Scenario(Strict):
         tables: list[tuple[str, str, TableSpec | Target]] = [
             (i, "table", t) for i, t in zip(self.table_ids(), self.all_tables, strict=True)]
         targets: list[tuple[str, str, TableSpec | Target]] = [(t.id, "target", t) for t in self.targets]
-        return [{"id": i, "kind": kind, "x": t.x, "y": t.y, "difficulty": t.difficulty,
-                 "priority": t.priority} for i, kind, t in [*tables, *targets]]
+        out: list[dict[str, Any]] = []
+        for i, kind, t in [*tables, *targets]:
+            task: dict[str, Any] = {"id": i, "kind": kind, "x": t.x, "y": t.y, "difficulty": t.difficulty,
+                                    "priority": t.priority}
+            if isinstance(t, TableSpec):
+                task.update(yaw=t.yaw, length=t.length, width=t.width)
+            out.append(task)
+        return out
+
+    def told_start(self, name: str) -> dict[str, float]:
+        """Where robot `name` is told it was placed: its start as written (yaw in degrees), not the
+        jittered truth."""
+        start = self.robots[name]
+        return {"x": start.x, "y": start.y, "yaw": start.yaw}
 
     def battery_of(self, name: str) -> LinearBattery | Eq5Battery:
         return self.robots[name].battery or self.battery

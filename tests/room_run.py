@@ -1,6 +1,7 @@
 """Test-side runner for rooms of several tables (issue 10): each robot is told, as the `table`
 param of move_furniture, where the table its task names stands in its own start frame (from the
-start pose the scenario gives it, not the jittered truth), and the end is judged from the truth."""
+start pose the scenario gives it, not the jittered truth), and the end is judged from the truth.
+With `pairs`, each robot is also told its partner, the pair's channel and its role."""
 
 from __future__ import annotations
 
@@ -15,7 +16,7 @@ from hfsm.registry import Registry
 from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, run
 from sim import World, load_scenario
-from sim.scenario import Scenario
+from sim.scenario import FailureAt, Scenario
 
 ROOT = Path(__file__).resolve().parents[1]
 TOP = ROOT / "machines" / "move_furniture.yaml"
@@ -27,6 +28,10 @@ class RoomRun:
     roles: dict[str, str]
     score: dict[str, Any]
     moved: dict[str, float]  # each table's centre, metres from where it started
+    outputs: dict[str, dict[str, Any]]
+    ends: dict[str, list[float]]  # each table's centre at the end, room frame (the truth)
+    times: dict[str, float]  # when each robot's machine ended (or it failed)
+    holding: dict[str, bool]  # whose hands hold a load at the end
 
 
 def in_start_frame(scenario: Scenario, robot: str, table: str) -> list[float]:
@@ -38,16 +43,41 @@ def in_start_frame(scenario: Scenario, robot: str, table: str) -> list[float]:
     return [math.cos(yaw) * dx + math.sin(yaw) * dy, -math.sin(yaw) * dx + math.cos(yaw) * dy]
 
 
-def run_room(scenario_name: str, seed: int, tasks: dict[str, str], max_time: float = 2400.0) -> RoomRun:
+def to_room(scenario: Scenario, robot: str, point: list[float]) -> list[float]:
+    """A point in `robot`'s start frame, in the room's frame (from the start pose the scenario gives)."""
+    start = scenario.robots[robot]
+    yaw = math.radians(start.yaw)
+    x, y = point
+    return [start.x + math.cos(yaw) * x - math.sin(yaw) * y, start.y + math.sin(yaw) * x + math.cos(yaw) * y]
+
+
+def pairs_told(pairs: dict[str, tuple[str, str]], channel: str = "") -> dict[str, dict[str, Any]]:
+    """For each table, (leader, assistant): each robot's partner, the pair's channel (the table's
+    name and `channel`) and its role, as a team would give them."""
+    told: dict[str, dict[str, Any]] = {}
+    for table, (leader, assistant) in pairs.items():
+        name = f"{table}{channel}_"
+        told[leader] = {"partner": assistant, "channel": name, "role": "leader"}
+        told[assistant] = {"partner": leader, "channel": name, "role": "assistant"}
+    return told
+
+
+def run_room(scenario_name: str, seed: int, tasks: dict[str, str], max_time: float = 2400.0, *,
+             told: dict[str, dict[str, Any]] | None = None, radio_loss: float = 0.0,
+             failures: dict[str, float] | None = None) -> RoomRun:
     """Run move_furniture, robot `r` told to move the table `tasks[r]` (robots not in `tasks`:
-    no table named)."""
+    no table named) and the params `told[r]`; `failures`: robot -> the second it fails."""
     reg = Registry.discover()
     loaded = load([TOP], registry=reg)
     root = loaded.roots[0]
     scenario = load_scenario(scenario_name)
-    agent_params = {robot: machine_params(root, {"table": in_start_frame(scenario, robot, table)})
+    if failures:
+        scenario = scenario.model_copy(update={"failures": [FailureAt(robot=r, at=t) for r, t in failures.items()]})
+    told = told or {}
+    agent_params = {robot: machine_params(root, {"table": in_start_frame(scenario, robot, table),
+                                                 **told.get(robot, {})})
                     for robot, table in tasks.items()}
-    world = World(scenario, seed)
+    world = World(scenario, seed, radio_loss=radio_loss)
     try:
         starts = [world.truth.table_pose(i)[:2] for i in range(len(world.truth.tables))]
         options = RunOptions(root.name, list(world.robots), machine_params(root, {}), seed, max_time,
@@ -55,9 +85,64 @@ def run_room(scenario_name: str, seed: int, tasks: dict[str, str], max_time: flo
         result = run(Program(loaded.machines, reg, 0.05), SimWorld(world), options)
         ends = [world.truth.table_pose(i)[:2] for i in range(len(world.truth.tables))]
         score = world.score()
+        holding = {name: bool(robot.holding()) for name, robot in world.robots.items()}
     finally:
         world.close()
     outcomes = {a: str(r.outcome) for a, r in result.agents.items()}
     roles = {a: str(r.outputs.get("role", "")) for a, r in result.agents.items()}
     moved = {t: math.dist(s, e) for t, s, e in zip(scenario.table_ids(), starts, ends, strict=True)}
-    return RoomRun(outcomes, roles, score, moved)
+    outputs = {a: dict(r.outputs) for a, r in result.agents.items()}
+    times = {a: float(r.time) for a, r in result.agents.items()}
+    at_end = {t: [round(float(v), 3) for v in e] for t, e in zip(scenario.table_ids(), ends, strict=True)}
+    return RoomRun(outcomes, roles, score, moved, outputs, at_end, times, holding)
+
+
+PAIRS = {  # scenario -> table -> (leader, assistant), as a team would form them
+    "room_2_tables": {"table1": ("r1", "r2"), "table2": ("r3", "r4")},
+    "room_3_pairs": {"table1": ("r1", "r2"), "table2": ("r3", "r4"), "table3": ("r5", "r6")},
+}
+
+
+def run_pairs(scenario: str, seed: int, *, radio_loss: float = 0.0, failures: dict[str, float] | None = None,
+              max_time: float = 2400.0) -> RoomRun:
+    """Every pair of PAIRS[scenario] told its table, partner, channel and roles."""
+    pairs = PAIRS[scenario]
+    tasks = {robot: table for table, pair in pairs.items() for robot in pair}
+    return run_room(scenario, seed, tasks, max_time, told=pairs_told(pairs), radio_loss=radio_loss,
+                    failures=failures)
+
+
+def main(argv: list[str] | None = None) -> None:
+    """One Markdown row per seed: `python tests/room_run.py room_2_tables 0-9 [--loss 0.3]`."""
+    import argparse
+    import time
+
+    parser = argparse.ArgumentParser(description=main.__doc__)
+    parser.add_argument("scenario", choices=sorted(PAIRS))
+    parser.add_argument("seeds", help="first-last")
+    parser.add_argument("--loss", type=float, default=0.0)
+    parser.add_argument("--fail", action="append", default=[], help="ROBOT@SECONDS")
+    args = parser.parse_args(argv)
+    first, _, last = args.seeds.partition("-")
+    failures = {r: float(t) for r, _, t in (f.partition("@") for f in args.fail)}
+    print("| seed | outcomes | roles | wall gaps (m) | dropped | robot-robot | ends (sim s) | wall s |")
+    print("|---|---|---|---|---|---|---|---|")
+    cleared = 0
+    seeds = range(int(first), int(last or first) + 1)
+    for seed in seeds:
+        start = time.monotonic()
+        room = run_pairs(args.scenario, seed, radio_loss=args.loss, failures=failures)
+        score = room.score
+        ok = bool(score["success"])
+        cleared += ok
+        outcomes = " ".join(room.outcomes[r] for r in sorted(room.outcomes))
+        roles = " ".join(room.roles[r][:1].upper() or "-" for r in sorted(room.roles))
+        gaps = " / ".join(f"{d:.3f}" for d in score["table_wall_distances"])
+        print(f"| {seed} | {outcomes} | {roles} | {gaps} | {score['dropped']} | {score['robot_collisions']} "
+              f"| {' '.join(f'{room.times[r]:.0f}' for r in sorted(room.times))} | {time.monotonic() - start:.0f} |",
+              flush=True)
+    print(f"\n{cleared} of {len(seeds)} rooms cleared (every table at a wall, no drop, no robot-robot collision)")
+
+
+if __name__ == "__main__":
+    main()

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from behaviours.approach.around import go_to_opposite_side_of_table
-from behaviours.approach.assist import clear_way, look_for_leader
+from behaviours.approach.assist import clear_way, look_for_leader, sense_own_colour
 from behaviours.approach.corner import go_to_table
 from behaviours.approach.search import centre_table, scan_for_table, spin_on_the_spot, walk_randomly
 from behaviours.approach.side import go_to_the_lifting_point, position_to_centre_of_table_side
@@ -17,6 +17,7 @@ PRIMITIVES: tuple[Primitive, ...] = (
     go_to_table,
     position_to_centre_of_table_side,
     go_to_the_lifting_point,
+    sense_own_colour,
     look_for_leader,
     clear_way,
     go_to_opposite_side_of_table,

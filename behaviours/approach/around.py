@@ -103,12 +103,14 @@ def go_to_opposite_side_of_table(
         spread: float = 0.7, along_tolerance: float = 0.03, out_tolerance: float = 0.03,
         yaw_tolerance: float = 0.05, tries: int = 4, legs: int = 4, length: float = 0.0,
         width: float = 0.0, step: float = 0.5, views: int = 6, min_points: int = 60,
-        in_line: float = 0.35, table: list[float] | None = None, gate: float = 0.6) -> Outcome:
+        in_line: float = 0.35, table: list[float] | None = None, gate: float = 0.6,
+        leader_colour: int = -1) -> Outcome:
     """Face the table, see where the leader stands, walk round the table (`margin` m clear
     of its corners) to the other long side and square up `gap` m out from its middle; check
     that the leader now stands behind the table (its blob above the table's). `length` and
     `width`: the table as the leader measured it (0: unknown), to tell a whole view. With a
-    `table` ([x, y], own start frame): the table seen nearest it, within `gate` m."""
+    `table` ([x, y], own start frame): the table seen nearest it, within `gate` m. With a
+    `leader_colour` (>= 0, as the leader said it): only a robot of that colour is the leader."""
     body = Body(ctx)
     named_at = named(table)
     look = Look(pitch=pitch, spread=spread, target=named_at, gate=gate)
@@ -122,7 +124,7 @@ def go_to_opposite_side_of_table(
     rect = clear_view(body, look, known, own, step, views, min_points, in_line)
     if not rect.found:
         return Outcome("lost")
-    leader = scan_for_robot(body, [0.0, 0.6, -0.6, 1.2, -1.2], pitch, own)
+    leader = scan_for_robot(body, [0.0, 0.6, -0.6, 1.2, -1.2], pitch, own, leader_colour)
     target = opposite_side(rect, leader, body.odometry()[:2])
     for _ in range(legs):
         points = route(rect, body.odometry()[:2], target, margin, gap)
@@ -134,6 +136,6 @@ def go_to_opposite_side_of_table(
     tol = Tolerance(along_tolerance, out_tolerance, yaw_tolerance)
     rect, _, ok = align_to_side(body, rect, target.middle, gap, look, tol, tries,
                                 known if known.length > 0 else None)
-    if not leader_behind_table(body, pitch, own):
+    if not leader_behind_table(body, pitch, own, leader_colour):
         return Outcome("leader_not_across", leader_seen=leader.found)
     return Outcome("at_opposite_side" if ok else "not_aligned", leader_seen=leader.found)

@@ -12,12 +12,20 @@ from hfsm.primitive import Context, Outcome, primitive
 LEADER_YAWS = [0.0, 0.9, -0.9, 1.8, -1.8]
 
 
+@primitive(outcomes=["colour"], outputs=["colour"], world="sim")
+def sense_own_colour(ctx: Context) -> Outcome:
+    """This robot's colour, an index of the robot colours: the colour of its own hands, seen
+    from above (-1: none seen). A robot says it to its partner, which then looks for it."""
+    return Outcome("colour", colour=own_colour(Body(ctx)))
+
+
 @primitive(outcomes=["found", "not_found"], outputs=["bearing", "distance"], world="sim")
-def look_for_leader(ctx: Context, *, pitch: float = 0.3) -> Outcome:
+def look_for_leader(ctx: Context, *, pitch: float = 0.3, colour: int = -1) -> Outcome:
     """Turn the head until the other robot (a robot colour that is not that of our own
-    hands) is in view; its bearing (body frame) and the ground distance to its feet."""
+    hands; with `colour` >= 0, the leader's colour as it said it) is in view; its bearing (body
+    frame) and the ground distance to its feet."""
     body = Body(ctx)
-    seen = scan_for_robot(body, LEADER_YAWS, pitch, own_colour(body))
+    seen = scan_for_robot(body, LEADER_YAWS, pitch, own_colour(body), colour)
     body.look(0.0, pitch)
     if not seen.found:
         return Outcome("not_found")
@@ -26,14 +34,17 @@ def look_for_leader(ctx: Context, *, pitch: float = 0.3) -> Outcome:
 
 @primitive(outcomes=["cleared"], outputs=["moved"], world="sim")
 def clear_way(ctx: Context, *, leader_bearing: float = 0.0, leader_distance: float = -1.0,
-              distance: float = 0.6, sideways: float = 1.0, pitch: float = 0.3) -> Outcome:
+              distance: float = 0.6, sideways: float = 1.0, pitch: float = 0.3,
+              leader_colour: int = -1) -> Outcome:
     """Move out of the leader's way: unless the leader stands behind the table (the table's
     blob below the leader's), walk `distance` metres away from the table (ahead), turned
     `sideways` rad from straight back towards the side away from the leader
-    (`leader_distance` < 0: not seen, straight back); then face the table again."""
+    (`leader_distance` < 0: not seen, straight back); then face the table again. With a
+    `leader_colour` (>= 0), only a robot of that colour is the leader."""
     body = Body(ctx)
     table = see_table(body, 0.0, pitch)
-    if table is not None and leader_distance >= 0 and leader_behind_table(body, pitch, own_colour(body)):
+    both_seen = leader_distance >= 0 and table is not None
+    if both_seen and leader_behind_table(body, pitch, own_colour(body), leader_colour):
         return Outcome("cleared", moved=0.0)
     pose = body.odometry()
     table_point = body_to_odom(pose, (table.distance if table else 1.0, 0.0))

@@ -127,10 +127,17 @@ def own_colour(body: Body, pitch: float = 0.5) -> int:
     return int(np.argmax(areas)) if max(areas, default=0) > 0 else -1
 
 
-def see_robot(body: Body, yaw: float, pitch: float, own: int) -> RobotSighting:
-    """The largest blob of another robot's colour in this view, if any."""
+def other_robot(i: int, own: int, only: int = -1) -> bool:
+    """Robot colour `i` is the one looked for: colour `only` (a partner's, as it said it), or
+    with `only` < 0 any colour but this robot's own."""
+    return i == only if only >= 0 else i != own
+
+
+def see_robot(body: Body, yaw: float, pitch: float, own: int, only: int = -1) -> RobotSighting:
+    """The largest blob of another robot's colour (of colour `only` if >= 0) in this view, if any."""
     body.look(clamp_yaw(yaw), pitch)
-    blobs = [b for i, b in enumerate(find_robots(body.image("forward"))) if i != own and b.found]
+    robots = enumerate(find_robots(body.image("forward")))
+    blobs = [b for i, b in robots if other_robot(i, own, only) and b.found]
     if not blobs:
         return NO_ROBOT
     blob = max(blobs, key=lambda b: b.area_px)
@@ -143,18 +150,19 @@ def see_robot(body: Body, yaw: float, pitch: float, own: int) -> RobotSighting:
                          ground.distance, blob)
 
 
-def scan_for_robot(body: Body, yaws: Sequence[float], pitch: float, own: int) -> RobotSighting:
+def scan_for_robot(body: Body, yaws: Sequence[float], pitch: float, own: int,
+                   only: int = -1) -> RobotSighting:
     for yaw in yaws:
-        seen = see_robot(body, yaw, pitch, own)
+        seen = see_robot(body, yaw, pitch, own, only)
         if seen.found:
             return seen
     return NO_ROBOT
 
 
-def leader_behind_table(body: Body, pitch: float, own: int) -> bool:
-    """Section 3.5: the other robot stands behind the table if the table's blob is below its
-    blob (looking straight ahead)."""
+def leader_behind_table(body: Body, pitch: float, own: int, only: int = -1) -> bool:
+    """Section 3.5: the other robot (of colour `only` if >= 0) stands behind the table if the
+    table's blob is below its blob (looking straight ahead)."""
     body.look(0.0, pitch)
     image = body.image("forward")
     table = find_table(image)
-    return any(is_below(table, b) for i, b in enumerate(find_robots(image)) if i != own)
+    return any(is_below(table, b) for i, b in enumerate(find_robots(image)) if other_robot(i, own, only))

@@ -12,15 +12,22 @@ from sim.perception import WallSeen
 
 @primitive(outcomes=["chosen", "failure"], outputs=["direction", "distance"], world="sim")
 def choose_carry_direction(
-    ctx: Context, *, look_yaw: float = 2.0, look_pitch: float = 0.5
+    ctx: Context, *, look_yaw: float = 2.0, look_pitch: float = 0.5, toward: list[float] | None = None
 ) -> str | Outcome:
     """Look left and right along the table's long axis and choose the side whose wall is
-    nearer (a tie goes left). Outputs `direction` ('left'/'right', in this robot's frame)
-    and `distance` (m) to that wall. `failure` when no wall is seen on either side."""
+    nearer (a tie goes left); with `toward` ([x, y] m in the own start frame, e.g. a wall
+    segment the team claimed), the side that point lies on. Outputs `direction`
+    ('left'/'right', in this robot's frame) and `distance` (m) to that side's wall (-1: not
+    seen). `failure` when no wall is seen on either side and no point is given."""
     body = Body(ctx)
     seen = {side: wall(body, side, look_yaw, look_pitch) for side in ("left", "right")}
     body.look(0.0, 0.0)
     found = {side: w.distance for side, w in seen.items() if w.found}
+    if toward:
+        x, y, yaw = body.odometry()
+        across = -math.sin(yaw) * (toward[0] - x) + math.cos(yaw) * (toward[1] - y)
+        side = "left" if across >= 0 else "right"
+        return Outcome("chosen", direction=side, distance=round(found.get(side, -1.0), 3))
     if not found:
         return "failure"
     side = min(found, key=lambda s: (found[s], s != "left"))

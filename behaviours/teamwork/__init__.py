@@ -8,7 +8,8 @@ from __future__ import annotations
 
 from behaviours.teamwork.memory import tararc_recall, tararc_remember
 from behaviours.teamwork.plans import tararc_allocate, tararc_help
-from behaviours.teamwork.radio import tararc_gather, tararc_watch
+from behaviours.teamwork.radio import partner_silent, tararc_gather, tararc_watch
+from behaviours.teamwork.room import room_allocate, room_assign, room_locate, room_watch
 from hfsm.primitive import Primitive
 
 PRIMITIVES: tuple[Primitive, ...] = (
@@ -18,4 +19,9 @@ PRIMITIVES: tuple[Primitive, ...] = (
     tararc_watch,
     tararc_help,
     tararc_remember,
+    partner_silent,
+    room_allocate,
+    room_assign,
+    room_locate,
+    room_watch,
 )

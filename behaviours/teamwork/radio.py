@@ -52,3 +52,25 @@ def tararc_watch(
 
     ctx.wait_until(news)
     return Outcome("changed", lost=sorted(known))
+
+
+@primitive(outcomes=["silent"], outputs=["heard"])
+def partner_silent(
+    ctx: Context, *, partner: str, message: str, silence: float = 20.0, grace: float = 60.0
+) -> Outcome:
+    """Listen to a partner's heartbeat (`message`, as `say` sends it, from `partner` only) until
+    it has been silent for `silence` seconds, or was never heard within `grace` seconds (it may
+    start later). A failed robot says nothing (SPEC 15): this is how its partner learns of it.
+    `heard`: whether the partner was heard at all."""
+    quiet, late = span_ticks(silence, ctx.dt), span_ticks(grace, ctx.dt)
+    start = ctx.tick
+    last: list[int] = []
+
+    def gone() -> bool:
+        while (m := ctx.receive(message)) is not None:
+            if m.sender == partner:
+                last[:] = [ctx.tick]
+        return ctx.tick - last[0] >= quiet if last else ctx.tick - start >= late
+
+    ctx.wait_until(gone)
+    return Outcome("silent", heard=bool(last))

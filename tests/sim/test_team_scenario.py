@@ -53,8 +53,10 @@ def test_tasks_are_tables_then_targets_with_difficulty_and_priority() -> None:
         targets=[{"id": "intruder", "x": 0.0, "y": 3.0, "difficulty": 0.9}],
         robots={"r1": {"x": 0.0, "y": -2.0}}))
     assert scenario.tasks() == [
-        {"id": "table1", "kind": "table", "x": -2.0, "y": 0.0, "difficulty": 0.8, "priority": 2},
-        {"id": "desk", "kind": "table", "x": 2.0, "y": 0.0, "difficulty": 0.5, "priority": 1},
+        {"id": "table1", "kind": "table", "x": -2.0, "y": 0.0, "difficulty": 0.8, "priority": 2,
+         "yaw": 0.0, "length": 0.8, "width": 0.5},
+        {"id": "desk", "kind": "table", "x": 2.0, "y": 0.0, "difficulty": 0.5, "priority": 1,
+         "yaw": 0.0, "length": 0.8, "width": 0.5},
         {"id": "intruder", "kind": "target", "x": 0.0, "y": 3.0, "difficulty": 0.9, "priority": 1},
     ]
 
@@ -119,3 +121,10 @@ def test_rate_failures_are_seeded_and_positive(seed: int, rate: float) -> None:
     assert times == scenario.failure_times(seed)
     assert [name for _, name, _ in times] == [f"r{i}" for i in range(5)]
     assert all(t > 0.0 for t, _, _ in times)
+
+
+def test_a_robot_is_told_its_start_as_written_not_the_jittered_truth() -> None:
+    scenario = scenario_from_dict(room(robots={"r1": {"x": 0.5, "y": -2.0, "yaw": 90}}, jitter={"position": 0.1, "yaw": 10}))
+    assert scenario.told_start("r1") == {"x": 0.5, "y": -2.0, "yaw": 90.0}
+    x, y, _ = scenario.starts(3)["r1"]
+    assert (x, y) != (0.5, -2.0)

@@ -144,3 +144,30 @@ def test_no_crash_on_random_images(seed: int, shape: tuple[int, int]) -> None:
     assert blob.found == (blob.area_px > 0)
     assert 0.0 <= blob.area_fraction <= 1.0
     assert blob_from_mask(np.zeros(shape, bool)) == NO_BLOB
+
+
+@pytest.mark.parametrize("in_view", [["r2", "r3", "r4", "r5"], ["r6", "r7", "r8", "r9"]])
+def test_nine_robot_colours_are_told_apart(scene: SceneFactory, in_view: list[str]) -> None:
+    """Issue 10: rooms of several pairs need more than five colours; each of nine robots is found
+    by its own colour alone, where it stands, and no colour of a robot out of view is found."""
+    names = [f"r{i}" for i in range(2, 10)]
+    robots = {"r1": {"x": -2.0, "y": 0.0, "yaw": 0.0}}
+    for i, name in enumerate(names):
+        if name in in_view:
+            k = in_view.index(name)
+            robots[name] = {"x": 0.5, "y": 1.2 - 0.8 * k, "yaw": 180.0}
+        else:
+            robots[name] = {"x": -3.0 - 0.6 * (i % 2), "y": 3.0 - 2.0 * (i // 2), "yaw": 0.0}
+    s = scene(robots, size=(640, 480), table={"x": 3.0, "y": 3.0})
+    image = s.image()
+    blobs = find_robots(image)
+    assert len(blobs) >= 9
+    for i, name in enumerate(["r1", *names]):
+        blob = blobs[i]
+        if name not in in_view:
+            assert not blob.found, f"{name}'s colour is out of view"
+            continue
+        vs, us = np.nonzero(s.robot_seg(name))
+        assert blob.found
+        assert abs(blob.left - us.min()) <= 1 and abs(blob.right - us.max()) <= 1
+        assert abs(blob.top - vs.min()) <= 1

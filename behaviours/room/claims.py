@@ -1,0 +1,110 @@
+"""Claimed walls: each table is carried along its long axis to the wall that axis meets, one way or the
+other; the team picks every table's way so that no two carrying corridors cross.
+
+A corridor is the strip a carrying pair sweeps: from the table's far end to the wall, as wide as the
+table plus a robot on each long side (`reach`). Every robot computes the same claims from the same
+table list, so no message is needed; the way is given to the pair's leader as `toward` (a point of
+the wall), and the leader carries towards the table's end nearer that point.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+Point = tuple[float, float]
+
+
+@dataclass(frozen=True)
+class Rect:
+    """An oriented rectangle: centre, unit axis along its length, half length, half width."""
+
+    cx: float
+    cy: float
+    ux: float
+    uy: float
+    half_length: float
+    half_width: float
+
+    def corners(self) -> list[Point]:
+        vx, vy = -self.uy, self.ux
+        return [(self.cx + a * self.half_length * self.ux + b * self.half_width * vx,
+                 self.cy + a * self.half_length * self.uy + b * self.half_width * vy)
+                for a, b in ((1, 1), (1, -1), (-1, -1), (-1, 1))]
+
+    def axes(self) -> list[Point]:
+        return [(self.ux, self.uy), (-self.uy, self.ux)]
+
+
+def overlap(a: Rect, b: Rect) -> bool:
+    """Whether two oriented rectangles overlap (separating axes)."""
+    ca, cb = a.corners(), b.corners()
+    for ax, ay in [*a.axes(), *b.axes()]:
+        pa = [x * ax + y * ay for x, y in ca]
+        pb = [x * ax + y * ay for x, y in cb]
+        if max(pa) <= min(pb) or max(pb) <= min(pa):
+            return False
+    return True
+
+
+def wall_hit(x: float, y: float, ux: float, uy: float, width: float, depth: float) -> float:
+    """Metres from (x, y) along (ux, uy) to the first wall of a room centred on 0."""
+    hits = []
+    for c, u, half in ((x, ux, width / 2), (y, uy, depth / 2)):
+        if abs(u) > 1e-9:
+            hits.append(((half if u > 0 else -half) - c) / u)
+    return min(hits)
+
+
+@dataclass(frozen=True)
+class Way:
+    table: str
+    sign: int  # +1: along the heading, -1: against it
+    travel: float  # metres the table's centre moves until its end touches the wall
+    toward: Point  # the wall point the table's leading end heads for
+    corridor: Rect
+
+
+def way(table: Mapping[str, Any], sign: int, width: float, depth: float, reach: float) -> Way:
+    yaw = math.radians(float(table.get("yaw", 0.0)))
+    ux, uy = sign * math.cos(yaw), sign * math.sin(yaw)
+    x, y = float(table["x"]), float(table["y"])
+    half = float(table.get("length", 0.8)) / 2
+    to_wall = wall_hit(x, y, ux, uy, width, depth)
+    travel = max(0.0, to_wall - half)
+    # from the trailing end at the start to the wall
+    span = (to_wall + half) / 2
+    centre = (x + ux * (to_wall - span), y + uy * (to_wall - span))
+    corridor = Rect(centre[0], centre[1], ux, uy, span, float(table.get("width", 0.5)) / 2 + reach)
+    toward = (round(x + ux * to_wall, 6), round(y + uy * to_wall, 6))
+    return Way(str(table["id"]), sign, round(travel, 6), toward, corridor)
+
+
+def footprint(table: Mapping[str, Any], reach: float) -> Rect:
+    yaw = math.radians(float(table.get("yaw", 0.0)))
+    return Rect(float(table["x"]), float(table["y"]), math.cos(yaw), math.sin(yaw),
+                float(table.get("length", 0.8)) / 2 + reach, float(table.get("width", 0.5)) / 2 + reach)
+
+
+def crossings(ways: Sequence[Way], tables: Sequence[Mapping[str, Any]], reach: float) -> int:
+    """Pairs of corridors that overlap, and corridors over another table where it stands."""
+    count = sum(overlap(a.corridor, b.corridor) for a, b in itertools.combinations(ways, 2))
+    for w in ways:
+        count += sum(overlap(w.corridor, footprint(t, 0.0)) for t in tables if str(t["id"]) != w.table)
+    return count
+
+
+def claim_walls(tables: Sequence[Mapping[str, Any]], width: float, depth: float,
+                reach: float = 0.5) -> dict[str, Way]:
+    """Every table's way to a wall: the choice with the fewest crossings, then the least travel, then
+    the first in table order (+1 before -1). Up to 2^K choices: K is at most 5 here."""
+    ordered = sorted(tables, key=lambda t: str(t["id"]))
+    if not ordered:
+        return {}
+    options = [[way(t, s, width, depth, reach) for s in (1, -1)] for t in ordered]
+    best = min(itertools.product(*options),
+               key=lambda ws: (crossings(ws, ordered, reach), round(sum(w.travel for w in ws), 6)))
+    return {w.table: w for w in best}

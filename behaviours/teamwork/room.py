@@ -1,0 +1,94 @@
+"""Primitives of the room-clearing team (machines/clear_room*.yaml): the plan of pairs, a robot's job
+in it, the team's news (robots lost, tables done, dropped tables seen) and where a dropped table is.
+
+Pure of any world: they hear, say and compute with `behaviours.room`, so they run in world `none`.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from behaviours.room.frames import ahead, to_local, to_room
+from behaviours.room.plan import job_of, make_room_plan
+from behaviours.teamwork.plans import coefficients_from
+from hfsm.primitive import Context, Outcome, primitive
+from hfsm.runtime.program import span_ticks
+
+
+@primitive(outcomes=["allocated"], outputs=["plan"])
+def room_allocate(ctx: Context, *, mine: dict[str, Any], heard: dict[str, Any], tasks: list[Any],
+                  room: dict[str, Any], coefficients: dict[str, Any], reach: float = 0.5) -> Outcome:
+    """TARARC's groups, one per table of `tasks` (difficulty from the table's size), agents competing
+    for the tables, and each table's claimed wall (corridors `reach` m wider than the table each side)."""
+    states = {**heard, ctx.agent: mine}
+    plan = make_room_plan(states, tasks, room, coefficients_from(coefficients), reach)
+    return Outcome("allocated", plan=plan)
+
+
+@primitive(outcomes=["assigned", "excluded"], outputs=["job"])
+def room_assign(ctx: Context, *, plan: dict[str, Any], lost: list[Any], done: list[Any], seen: dict[str, Any],
+                start: dict[str, Any], spent: list[Any] | None = None) -> Outcome:
+    """This robot's job after the robots `lost` and the tables `done`, a dropped table where a
+    survivor `seen` it, on a channel no `spent` pairing used; `table` and `toward` in its own start
+    frame (from `start`, where it was told it was placed). `excluded` when a teammate took this
+    robot for lost."""
+    where = {str(t): [float(v["x"]), float(v["y"])] for t, v in seen.items()}
+    job = job_of(plan, ctx.agent, [str(r) for r in lost], [str(t) for t in done], where,
+                 [str(c) for c in spent or []])
+    if job is None:
+        return Outcome("excluded", job={})
+    local = {"table_local": to_local(start, job["at"]) if job["at"] else [],
+             "toward_local": to_local(start, job["toward"]) if job["toward"] else []}
+    return Outcome("assigned", job={**job, **local})
+
+
+@primitive(outcomes=["located"], outputs=["seen"])
+def room_locate(ctx: Context, *, seen: dict[str, Any], table: str, start: dict[str, Any],
+                pose: dict[str, Any],
+                table_at: list[Any] | None = None, reach: float = 0.55) -> Outcome:
+    """Where this robot, left with a dropped `table`, believes it is, in the room's frame, added to
+    `seen`: `table_at` (its own estimate, start frame) when it has one, else `reach` m ahead of it
+    (it faced the table it held)."""
+    local = [float(v) for v in table_at] if table_at else ahead(pose, reach)
+    x, y = to_room(start, local)
+    sight = {"x": x, "y": y, "t": round(ctx.time, 6), "by": ctx.agent}
+    return Outcome("located", seen={**seen, table: sight})
+
+
+def _newer(a: dict[str, Any], b: dict[str, Any]) -> bool:
+    return (float(a["t"]), str(a["by"])) > (float(b["t"]), str(b["by"]))
+
+
+@primitive(outcomes=["changed"], outputs=["lost", "done", "seen", "spent"])
+def room_watch(ctx: Context, *, team: list[Any], lost: list[Any], done: list[Any], seen: dict[str, Any],
+               spent: list[Any] | None = None, silence: float = 5.0, message: str = "room_alive") -> Outcome:
+    """Listen to the team's heartbeats (`message`, said with data {lost, done, seen, spent}) until the
+    team knows more than given: a robot silent for `silence` s or said lost, a table said done, a
+    dropped table seen later, a pairing spent. Each is a set that only grows (a later sighting
+    replaces an earlier one), so robots that heard the same news, in any order, agree."""
+    known_lost, known_done = {str(r) for r in lost}, {str(t) for t in done}
+    known_spent = {str(c) for c in spent or []}
+    known_seen = {str(t): dict(v) for t, v in seen.items()}
+    watched = {str(r) for r in team} - known_lost - {ctx.agent}
+    heard = dict.fromkeys(watched, ctx.tick)
+    quiet = span_ticks(silence, ctx.dt)
+    given = (set(known_lost), set(known_done), {t: dict(v) for t, v in known_seen.items()}, set(known_spent))
+
+    def news() -> bool:
+        while (m := ctx.receive(message)) is not None:
+            if m.sender in heard:
+                heard[m.sender] = ctx.tick
+            data = m.data.get("data", {})
+            known_lost.update(str(r) for r in data.get("lost", []))
+            known_done.update(str(t) for t in data.get("done", []))
+            known_spent.update(str(c) for c in data.get("spent", []))
+            for table, sight in data.get("seen", {}).items():
+                mine = known_seen.get(str(table))
+                if mine is None or _newer(sight, mine):
+                    known_seen[str(table)] = dict(sight)
+        known_lost.update(r for r, tick in heard.items() if ctx.tick - tick >= quiet)
+        return (known_lost, known_done, known_seen, known_spent) != given
+
+    ctx.wait_until(news)
+    return Outcome("changed", lost=sorted(known_lost), done=sorted(known_done),
+                   seen=dict(sorted(known_seen.items())), spent=sorted(known_spent))

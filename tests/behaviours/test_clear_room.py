@@ -1,0 +1,61 @@
+"""Clear the room (issue 10, "How it is checked"): machines/clear_room.yaml through `hfsm-run`, a
+room of two tables and four humanoids, lossless, with a robot failing mid-carry, and at 30 % radio
+loss. Each run is judged from the simulator's score (the truth), never from what the robots say."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from hfsm.cli.run import main
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def clear(scenario: str, tmp_path: Path, capsys: pytest.CaptureFixture[str], *flags: str) -> dict[str, Any]:
+    argv = [str(ROOT / "machines" / "clear_room.yaml"), "--scenario", scenario, "--seed", "0", *flags]
+    code = main([*argv, "--json", "--no-video", "--out", str(tmp_path), "--quiet"])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    result: dict[str, Any] = json.loads(out)
+    return result
+
+
+def assert_cleared(result: dict[str, Any], failed: set[str]) -> None:
+    agents = result["agents"]
+    assert {a for a, r in agents.items() if r.get("failed")} == failed
+    assert {a: r["outcome"] for a, r in agents.items() if a not in failed} == dict.fromkeys(
+        sorted(set(agents) - failed), "cleared")
+    score = result["score"]
+    assert all(d <= 0.15 for d in score["table_wall_distances"]), score
+    assert score["robot_collisions"] == 0
+
+
+@pytest.mark.slow
+def test_two_pairs_clear_two_tables(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    result = clear("room_2_tables", tmp_path, capsys)
+    assert_cleared(result, set())
+    roles = {a: (r["outputs"]["role"], r["outputs"]["table"]) for a, r in result["agents"].items()}
+    assert roles == {"r1": ("leader", "table1"), "r2": ("assistant", "table1"),
+                     "r3": ("leader", "table2"), "r4": ("assistant", "table2")}
+    assert not result["score"]["dropped"]
+
+
+@pytest.mark.slow
+def test_a_robot_failing_mid_carry_is_replaced_and_its_table_taken_up_again(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """r2, table1's assistant, fails while carrying: r1 lands the table, says where it left it, and
+    table2's pair, once done, lends r1 a new assistant."""
+    result = clear("room_2_tables_fail", tmp_path, capsys)
+    assert_cleared(result, {"r2"})
+    carries = result["agents"]["r1"]["outputs"]["carries"]
+    assert [c["outcome"] for c in carries][-1] == "at_wall" and carries[-1]["partner"] in {"r3", "r4"}
+
+
+@pytest.mark.slow
+def test_a_lossy_radio_delays_but_does_not_stop_the_team(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    result = clear("room_2_tables", tmp_path, capsys, "--radio-loss", "0.3")
+    assert_cleared(result, set())

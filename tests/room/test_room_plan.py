@@ -1,0 +1,108 @@
+"""The room's pure code: frames, claimed walls, pairs and help (behaviours/room)."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+from hypothesis import given
+from hypothesis import strategies as st
+
+from behaviours.room.claims import Rect, claim_walls, overlap
+from behaviours.room.frames import difficulty_of, to_local, to_room
+from behaviours.room.plan import groups_after, job_of, make_room_plan, tables_of
+
+ROOM = {"width": 7.0, "depth": 5.0}
+TASKS = [
+    {"id": "table1", "kind": "table", "x": -1.6, "y": 0.0, "yaw": 0, "length": 0.8, "width": 0.5, "priority": 1},
+    {"id": "table2", "kind": "table", "x": 1.6, "y": 0.0, "yaw": 0, "length": 1.0, "width": 0.6, "priority": 2},
+    {"id": "spot", "kind": "target", "x": 0.0, "y": 2.0, "difficulty": 0.5, "priority": 3},
+]
+
+
+def states(*places: tuple[str, float, float]) -> dict[str, dict[str, object]]:
+    return {r: {"x": x, "y": y, "energy": 1.0, "record": {}} for r, x, y in places}
+
+
+FOUR = states(("r1", -1.4, -1.2), ("r2", -1.8, 1.2), ("r3", 1.8, -1.2), ("r4", 1.4, 1.2))
+SIX = {**FOUR, **states(("r5", -2.5, -1.8), ("r6", 2.5, -1.8))}
+
+
+@given(st.floats(-5, 5), st.floats(-5, 5), st.floats(-180, 180), st.floats(-5, 5), st.floats(-5, 5))
+def test_frames_round_trip(x: float, y: float, yaw: float, px: float, py: float) -> None:
+    start = {"x": x, "y": y, "yaw": yaw}
+    back = to_room(start, to_local(start, [px, py]))
+    assert math.dist(back, [px, py]) < 1e-4
+
+
+def test_a_point_ahead_of_a_robot_facing_north_is_on_its_x_axis() -> None:
+    assert to_local({"x": 1.0, "y": 1.0, "yaw": 90}, [1.0, 3.0]) == [2.0, 0.0]
+
+
+def test_larger_tables_are_harder() -> None:
+    assert 0 < difficulty_of(0.6, 0.4) < difficulty_of(0.8, 0.5) < difficulty_of(1.2, 0.6) < 1
+    assert [t["id"] for t in tables_of(TASKS)] == ["table1", "table2"]  # targets are no tables
+
+
+def test_tables_in_line_go_to_opposite_walls() -> None:
+    ways = claim_walls(tables_of(TASKS), 7.0, 5.0)
+    assert ways["table1"].toward == (-3.5, 0.0) and ways["table2"].toward == (3.5, 0.0)
+    assert math.isclose(ways["table1"].travel, 3.5 - 1.6 - 0.4)
+
+
+def test_a_table_never_crosses_another_for_a_shorter_way() -> None:
+    # table2's nearer wall is west, but table1 stands in the way: it goes east, table1 west
+    tables = [{"id": "table1", "x": -2.0, "y": 0.0, "yaw": 0}, {"id": "table2", "x": -0.5, "y": 0.0, "yaw": 0}]
+    ways = claim_walls(tables, 7.0, 5.0)
+    assert ways["table1"].sign == -1 and ways["table2"].sign == 1
+    assert not overlap(ways["table1"].corridor, ways["table2"].corridor)
+
+
+def test_rectangles_overlap_when_turned() -> None:
+    a = Rect(0, 0, 1, 0, 1, 0.2)
+    turned = Rect(0.9, 0.9, math.cos(math.pi / 4), math.sin(math.pi / 4), 1, 0.2)
+    assert overlap(a, turned) and not overlap(a, Rect(0, 1, 1, 0, 1, 0.2))
+
+
+def test_the_plan_pairs_robots_and_keeps_spares() -> None:
+    plan = make_room_plan(SIX, TASKS, ROOM)
+    jobs = {r: job_of(plan, r, [], [], {}) for r in SIX}
+    assert {r: (j["role"], j["table"]) for r, j in jobs.items() if j} == {
+        "r1": ("leader", "table1"), "r2": ("assistant", "table1"), "r3": ("spare", "table1"),
+        "r4": ("leader", "table2"), "r5": ("assistant", "table2"), "r6": ("spare", "table2")}
+    assert jobs["r1"]["channel"] == jobs["r2"]["channel"] == "table1_r1_r2_"
+
+
+def test_a_spare_replaces_a_lost_assistant_and_7a_a_lost_leader() -> None:
+    plan = make_room_plan(SIX, TASKS, ROOM)
+    assistant_lost = {r: job_of(plan, r, ["r2"], [], {}) for r in ("r1", "r3")}
+    assert [(j["role"], j["partner"]) for j in assistant_lost.values() if j] == [("leader", "r3"), ("assistant", "r1")]
+    leader_lost = job_of(plan, "r2", ["r1"], [], {})
+    assert leader_lost is not None and (leader_lost["role"], leader_lost["partner"]) == ("leader", "r3")
+    assert job_of(plan, "r1", ["r1"], [], {}) is None
+
+
+def test_a_short_group_borrows_from_a_finished_table_and_the_table_where_it_was_seen() -> None:
+    plan = make_room_plan(FOUR, TASKS, ROOM)
+    assert job_of(plan, "r1", ["r2"], [], {})["role"] == "spare"  # alone: waits
+    job = job_of(plan, "r1", ["r2"], ["table2"], {"table1": [-2.0, 0.3]})
+    helper = job_of(plan, "r3", ["r2"], ["table2"], {"table1": [-2.0, 0.3]})
+    assert job is not None and helper is not None
+    assert (job["role"], job["partner"], job["at"]) == ("leader", "r3", [-2.0, 0.3])
+    assert (helper["role"], helper["channel"]) == ("assistant", "table1_r1_r3_")
+
+
+def test_the_same_news_in_any_order_gives_the_same_jobs() -> None:
+    plan = make_room_plan(SIX, TASKS, ROOM)
+    for lost in itertools.permutations(["r2", "r4"]):
+        assert [g["members"] for g in groups_after(plan, list(lost), [])] == [["r1", "r3"], ["r5", "r6"]]
+
+
+def test_a_pair_tries_again_on_a_new_channel_once_both_gave_up() -> None:
+    plan = make_room_plan(FOUR, TASKS, ROOM)
+    first = "table1_r1_r2_"
+    assert job_of(plan, "r1", [], [], {}, [f"{first}/r1"])["channel"] == first  # r2 still carries
+    again = job_of(plan, "r1", [], [], {}, [f"{first}/r1", f"{first}/r2"])
+    assert again["channel"] == "table1_r1_r2_1_"
+    third = job_of(plan, "r2", [], [], {}, [f"{first}/r1", f"{first}/r2", "table1_r1_r2_1_/r1", "table1_r1_r2_1_/r2"])
+    assert third["channel"] == "table1_r1_r2_2_"
