@@ -32,13 +32,14 @@ def table_lines(results: Sequence[Result]) -> list[str]:
     return rows
 
 
+LABELS = {"none": "no failure", "early": "one robot failing on its way to its table (5-25 s)",
+          "mid": "one robot failing in the carry (50-90 s)"}
+
+
 def summary_lines(results: Sequence[Result]) -> list[str]:
     out = []
-    for label, pick in (("no failure", lambda r: r["failure"] == "none"),
-                        ("one robot failing on its way to its table (5-25 s)",
-                         lambda r: r["failure"] == "early"),
-                        ("one robot failing in the carry (50-90 s)", lambda r: r["failure"] == "mid")):
-        rs = [r for r in results if pick(r)]
+    for kind, label in LABELS.items():
+        rs = [r for r in results if r["failure"] == kind]
         if rs:
             done = sum(r["cleared"] for r in rs)
             out.append(f"- {label}: {done} of {len(rs)} rooms cleared within 35 simulated minutes.")
