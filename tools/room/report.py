@@ -32,7 +32,7 @@ def table_lines(results: Sequence[Result]) -> list[str]:
     return rows
 
 
-LABELS = {"none": "no failure", "early": "one robot failing on its way to its table (5-25 s)",
+LABELS = {"none": "no failure", "early": "one robot failing on its way to its table (2-12 s)",
           "mid": "one robot failing in the carry (50-90 s)"}
 
 

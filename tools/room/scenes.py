@@ -52,7 +52,7 @@ def room(k: int, n: int, seed: int, failure: str = "none") -> dict[str, Any]:
         "jitter": {"position": 0.1, "yaw": 10},
     }
     if failure != "none":
-        low, high = {"early": (5.0, 25.0), "mid": (50.0, 90.0)}[failure]
+        low, high = {"early": (2.0, 12.0), "mid": (50.0, 90.0)}[failure]
         who = f"r{rng.randrange(2 * k) + 1}"  # a robot of a pair: a spare failing changes nothing
         scenario["failures"] = [{"robot": who, "at": round(rng.uniform(low, high), 1)}]
     return scenario
