@@ -14,7 +14,7 @@ from sim.scenario import scenario_from_dict  # noqa: E402
 from tools.sweep import Shard, SweepError, run_sweep  # noqa: E402
 from tools.tararc.experiments import Config, help_trials, main_trials  # noqa: E402
 from tools.tararc.measure import Timeline, measure  # noqa: E402
-from tools.tararc.report import growth, median, write  # noqa: E402
+from tools.tararc.report import growth, median, timed, write  # noqa: E402
 from tools.tararc.scenes import scene  # noqa: E402
 from tools.tararc.trials import BenchTrial, run_bench_trial  # noqa: E402
 
@@ -126,3 +126,11 @@ def test_shards_merged_give_the_results_of_one_run(tmp_path: Path, monkeypatch: 
     assert timeless(bench.run_bench(config, workers=1, first=merged)) == timeless(whole)
     with pytest.raises(SweepError, match="no shards"):
         bench.first_stage(config, shards=tmp_path / "none", merge=True)
+
+
+def test_the_time_to_group_counts_runs_that_grouped_but_missed_a_task() -> None:
+    rs = [{"completed": False, "grouped": 20.0, "converge": math.inf},
+          {"completed": True, "grouped": 10.0, "converge": 5.0},
+          {"completed": False, "grouped": math.inf, "converge": math.inf}]
+    assert timed(rs, "grouped") == [20.0, 10.0]
+    assert timed(rs, "converge") == [5.0]
