@@ -27,11 +27,12 @@ QUICK = Config(target_rooms=1, ks=(2,), k_seeds=1, ns=(), loss_rooms=0, max_time
 
 def trials(c: Config) -> list[RoomTrial]:
     s0 = c.first_seed
-    out = [RoomTrial(TARGET, 6 + i % 3, s0 + i, room(s0 + i, 3, 6 + i % 3, failure=True, fail_window=c.fail_window),
+    window = c.fail_window
+    out = [RoomTrial(TARGET, 6 + i % 3, s0 + i, room(s0 + i, 3, 6 + i % 3, failure=True, fail_window=window),
                      max_time=c.max_time) for i in range(c.target_rooms)]
     out += [RoomTrial("k", k, s, room(s, k, 2 * k), max_time=c.max_time)
             for k in c.ks for s in range(s0 + 100, s0 + 100 + c.k_seeds)]
     out += [RoomTrial("n", n, s0 + 200, room(s0 + 200, 3, n), max_time=c.max_time) for n in c.ns]
-    out += [RoomTrial("loss", 0.3, s0 + 300 + i, room(s0 + 300 + i, 3, 7, failure=i % 2 == 1, fail_window=c.fail_window),
-                      radio_loss=0.3, max_time=c.max_time) for i in range(c.loss_rooms)]
+    out += [RoomTrial("loss", 0.3, s, room(s, 3, 7, failure=i % 2 == 1, fail_window=window), radio_loss=0.3,
+                      max_time=c.max_time) for i, s in enumerate(range(s0 + 300, s0 + 300 + c.loss_rooms))]
     return out

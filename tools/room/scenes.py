@@ -130,7 +130,8 @@ def room(seed: int, k: int, n: int, *, failure: bool = False, fail_window: tuple
     failures = []
     if failure:
         robot = rng.choice(sorted(drawn["robots"], key=lambda r: int(r[1:])))
-        failures.append({"robot": robot, "at": round(rng.uniform(*fail_window), 1), "reason": "bench: random failure"})
+        at = round(rng.uniform(*fail_window), 1)
+        failures.append({"robot": robot, "at": at, "reason": "bench: random failure"})
     return {
         "description": f"room bench: {k} tables, {n} humanoids, seed {seed}",
         "task": "table_to_wall",

@@ -100,7 +100,7 @@ def measure(line: RoomLine, result_score: dict[str, Any], scenario: dict[str, An
         "cleared": cleared, "clear_time": cleared_at(line.carries, tables) if cleared else None,
         "time": time, "error": error, "distances": distances, "dropped": result_score["dropped"],
         "collisions": result_score["robot_collisions"],
-        "outcomes": outcomes, "carries": [{k: v for k, v in c.items()} for c in line.carries],
+        "outcomes": outcomes, "carries": [dict(c) for c in line.carries],
         "failed": line.failed,
     }
     planned = scenario.get("failures", [])
@@ -125,6 +125,7 @@ def run_room_trial(trial: RoomTrial) -> dict[str, Any]:
         result = run_trial(spec, line)
     sc = trial.scenario
     head = {"experiment": trial.experiment, "x": trial.x, "seed": trial.seed, "k": len(sc["tables"]),
-            "n": len(sc["robots"]), "loss": trial.radio_loss, "room": [sc["room"]["width"], sc["room"]["depth"]]}
+            "n": len(sc["robots"]), "loss": trial.radio_loss,
+            "room": [sc["room"]["width"], sc["room"]["depth"]]}
     return {**head, **measure(line, result.score, sc, result.outcomes, result.time, result.error),
             "wall": round(result.wall, 2)}
