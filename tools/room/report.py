@@ -22,7 +22,7 @@ def _median(xs: Sequence[float]) -> float | None:
 
 
 def _s(x: float | None) -> str:
-    return "–" if x is None else f"{x:.0f}"
+    return "-" if x is None else f"{x:.0f}"
 
 
 def _plot(results: list[Result], key: str, path: Path, xlabel: str, title: str) -> None:
@@ -34,14 +34,15 @@ def _plot(results: list[Result], key: str, path: Path, xlabel: str, title: str) 
         groups.setdefault(r["experiment"], []).append(r)
     for name, rows in sorted(groups.items()):
         done = [r for r in rows if r["cleared"]]
-        ax.scatter([r[key] for r in done], [r["clear_time"] for r in done], s=18, alpha=0.7, label=f"{name}: cleared")
+        ax.scatter([r[key] for r in done], [r["clear_time"] for r in done], s=18, alpha=0.7,
+                   label=f"{name}: cleared")
         left = [r for r in rows if not r["cleared"]]
         if left:
             ax.scatter([r[key] for r in left], [r["time"] for r in left], s=30, marker="x",
                        label=f"{name}: not cleared (run's end)")
-    xs = sorted({r[key] for r in results if r["cleared"] and not r.get("failure")})
-    meds = [_median([r["clear_time"] for r in results if r[key] == x and r["cleared"] and not r.get("failure")])
-            for x in xs]
+    plain = [r for r in results if r["cleared"] and not r.get("failure")]
+    xs = sorted({r[key] for r in plain})
+    meds = [statistics.median([r["clear_time"] for r in plain if r[key] == x]) for x in xs]
     if xs:
         ax.plot(xs, meds, marker="o", linewidth=2, color="black", label="median, rooms without failure")
     ax.set_xlabel(xlabel)
@@ -59,7 +60,8 @@ def _plot(results: list[Result], key: str, path: Path, xlabel: str, title: str) 
 def _story(r: Result) -> str:
     """How a room that was not cleared ended: each table's gap, the carries, the failure."""
     parts = [f"gaps {', '.join(f'{d:.2f}' for d in r['distances'])} m"]
-    carries = [f"{c['table']} {c['agent']}({c['role'][0]}) {c['outcome']} at {c['t']:.0f} s" for c in r["carries"]]
+    carries = [f"{c['table']} {c['agent']} ({c['role']}) {c['outcome']} at {c['t']:.0f} s"
+               for c in r["carries"]]
     if carries:
         more = f" (+{len(carries) - 6} more)" if len(carries) > 6 else ""
         parts.append("carries: " + "; ".join(carries[:6]) + more)
@@ -74,9 +76,10 @@ def _row(r: Result) -> str:
     f = r.get("failure")
     fail = f"{f['robot']} at {f['at']:.0f} s, {f['phase']}" if f else "none"
     gap = max(r["distances"])
-    return (f"| {r['trial']} | {r['experiment']} | {r['seed']} | {r['room'][0]} x {r['room'][1]} | {r['k']} | "
-            f"{r['n']} | {r['loss']:.1f} | {fail} | {'yes' if r['cleared'] else 'no'} | {_s(r['clear_time'])} | "
-            f"{gap:.2f} | {'yes' if r['dropped'] else 'no'} | {r['collisions']} | {r['wall']:.0f} |")
+    yes = {True: "yes", False: "no"}
+    return (f"| {r['trial']} | {r['experiment']} | {r['seed']} | {r['room'][0]} x {r['room'][1]} | "
+            f"{r['k']} | {r['n']} | {r['loss']:.1f} | {fail} | {yes[r['cleared']]} | {_s(r['clear_time'])} | "
+            f"{gap:.2f} | {yes[r['dropped']]} | {r['collisions']} | {r['wall']:.0f} |")
 
 
 def lines_for(results: list[Result], command: str, wall: float, workers: int, load: str) -> list[str]:
@@ -100,7 +103,8 @@ def lines_for(results: list[Result], command: str, wall: float, workers: int, lo
         f"({100 * len(ok) / max(1, len(target)):.0f} %; issue target: >= 95 %).",
         f"- Robot-robot collisions, all rooms: **{hits}** (target 0); rooms with any: "
         f"{sum(1 for r in results if r['collisions'])} of {len(results)}.",
-        f"- Wall time of one target room: median {_s(_median(walls))} s, max {_s(max(walls, default=None))} s "
+        f"- Wall time of one target room: median {_s(_median(walls))} s, "
+        f"max {_s(max(walls, default=None))} s "
         f"(two rooms running at once on the loaded machine; target < {WALL_TARGET:.0f} s on 2 cores).",
     ]
     phases: dict[str, list[bool]] = {}
@@ -112,18 +116,18 @@ def lines_for(results: list[Result], command: str, wall: float, workers: int, lo
     free = [r for r in results if not r.get("failure") and r["loss"] == 0]
     for key, name, rows in (("k", "K (tables; N = 2K, and K = 3 with N = 6-9)", free),
                             ("n", "N (robots; K = 3)", [r for r in free if r["k"] == 3])):
+        at = {x: [r for r in rows if r[key] == x] for x in sorted({r[key] for r in rows})}
         text = ", ".join(
-            f"{x}: {_s(_median([r['clear_time'] for r in rows if r[key] == x and r['cleared']]))} s "
-            f"({sum(r['cleared'] for r in rows if r[key] == x)}/{sum(1 for r in rows if r[key] == x)} cleared)"
-            for x in sorted({r[key] for r in rows}))
+            f"{x}: {_s(_median([r['clear_time'] for r in these if r['cleared']]))} s "
+            f"({sum(r['cleared'] for r in these)}/{len(these)} cleared)" for x, these in at.items())
         out.append(f"- Time to clear against {name}, rooms without failure, lossless (median): {text}.")
     loss = [r for r in results if r["loss"] > 0]
     if loss:
         out.append(f"- 30 % radio loss: {sum(r['cleared'] for r in loss)} of {len(loss)} cleared "
                    f"({', '.join(_s(r['clear_time']) + ' s' for r in loss)}).")
-    out += ["", "![time against K](figures/room/time_vs_k.png) ![time against N](figures/room/time_vs_n.png)", "",
-            "| trial | set | seed | room m | K | N | loss | failure | cleared | sim s | worst gap m | dropped | "
-            "collisions | wall s |", "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    out += ["", "![time against K](figures/room/time_vs_k.png) ![time against N](figures/room/time_vs_n.png)",
+            "", "| trial | set | seed | room m | K | N | loss | failure | cleared | sim s | worst gap m | "
+            "dropped | collisions | wall s |", "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     out += [_row(r) for r in results]
     failed = [r for r in results if not r["cleared"]]
     if failed:
