@@ -11,7 +11,7 @@ import math
 from typing import Any
 
 from behaviours.approach.frames import odom_to_body, wrap
-from behaviours.drive.avoid import Detour, sensed
+from behaviours.drive.avoid import Detour, dodge, sensed
 from hfsm.primitive import Context, Outcome, primitive
 
 Point = tuple[float, float]
@@ -96,6 +96,34 @@ def go_to(ctx: Context, *, x: float, y: float, offset: list[float] | None = None
                 velocity = way_out.steer(ctx.time, velocity, seen, clearance, pace)
             robot.set_velocity(*body_velocity(here, velocity, pace))
             ctx.wait()
+    finally:
+        robot.stop()
+
+
+@primitive(outcomes=["timeout"], world="sim")
+def hold(ctx: Context, *, x: float, y: float, tolerance: float = 0.1, look: float = 1.0,
+         clearance: float = 0.3, timeout: float = 3600.0) -> Outcome:
+    """Keep to the point (x, y) of the odometry frame while waiting (a background region beside a
+    barrier): go back to it when farther than `tolerance`, and make way for what the proximity
+    sensor senses nearer than `clearance` (slide aside, as `go_to` does), so that a robot waiting
+    in a crowd is no wall to one passing through. Ends `timeout` after `timeout` seconds."""
+    robot = ctx.robot
+    pace = robot.profile.forward_max
+    deadline = ctx.time + timeout
+    try:
+        while ctx.time < deadline:
+            here = robot.odometry()
+            far = math.hypot(x - here[0], y - here[1]) > tolerance
+            velocity = heading(here, (x, y), pace, [], clearance) if far else (0.0, 0.0)
+            seen = [p for p in sensed(robot, look, here[2]) if math.hypot(*p) < clearance]
+            if seen:
+                velocity = dodge(velocity, seen, clearance, pace)
+            if far or seen:
+                robot.set_velocity(*body_velocity(here, velocity, pace))
+            else:
+                robot.stop()
+            ctx.wait()
+        return Outcome("timeout")
     finally:
         robot.stop()
 

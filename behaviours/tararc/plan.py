@@ -18,11 +18,11 @@ A group all of whose robots were lost keeps its task with `agent: null, members:
 from __future__ import annotations
 
 import hashlib
-import math
 from collections.abc import Mapping, Sequence
 from typing import Any
 
 from behaviours.tararc.allocation import Task
+from behaviours.tararc.formation import enclose, form_places
 from behaviours.tararc.formulas import PAPER, Coefficients
 from behaviours.tararc.grouping import Group, Robot
 from behaviours.tararc.help import apply_transfers, hand_over, lend
@@ -128,31 +128,43 @@ def key_of(lost: Sequence[str]) -> str:
     return "k" + hashlib.sha1(",".join(sorted(set(lost))).encode()).hexdigest()[:8]
 
 
-def ring(x: float, y: float, k: int, m: int, spacing: float) -> dict[str, float]:
-    """The k-th of m places spaced evenly on a circle of radius `spacing` around (x, y)."""
-    angle = 2.0 * math.pi * k / m
-    return {"x": x + spacing * math.cos(angle), "y": y + spacing * math.sin(angle)}
+GAP = 0.8  # robots stand at least GAP * spacing apart when formed up and round a task
+
+
+def bounds_of(plan: Plan) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The box the team's starts and its tasks span: places outside it may be outside the room."""
+    xs = [s["x"] for s in plan["robots"].values()] + [g["task"]["x"] for g in plan["groups"]]
+    ys = [s["y"] for s in plan["robots"].values()] + [g["task"]["y"] for g in plan["groups"]]
+    return ((min(xs), min(ys)), (max(xs), max(ys)))
+
+
+def places_of(plan: Plan, spacing: float) -> dict[str, tuple[float, float]]:
+    """Every robot's place when its group has formed up (`formation.form_places`)."""
+    starts = {r: (s["x"], s["y"]) for r, s in plan["robots"].items()}
+    groups = [(g["agent"], g["members"]) for g in plan["groups"] if g["members"]]
+    return form_places(groups, starts, bounds_of(plan), spacing, GAP * spacing)
 
 
 def role_of(plan: Plan, me: str, lost: Sequence[str], spacing: float) -> dict[str, Any] | None:
     """What robot `me` does under the plan; None when it is in no group (lost).
 
-    The agent's place is the task itself and, for forming up, its own start; members stand on a
-    ring of radius `spacing` around those (step 6: common nodes around the agent).
+    The agent's place is the task itself and, for forming up, its own start; members form up near
+    their agent and enclose the task on a ring round it (step 6, `formation`). Places are worked
+    out from the first plan's groups: a plan changed by help skips forming up.
     """
     for index, g in enumerate(plan["groups"]):
         if me not in g["members"]:
             continue
-        agent = plan["robots"][g["agent"]]
         task = g["task"]
         members = [m for m in g["members"] if m != g["agent"]]
+        formed = places_of(plan, spacing)
+        agent = formed.get(g["agent"], (plan["robots"][g["agent"]]["x"], plan["robots"][g["agent"]]["y"]))
         if me == g["agent"]:
-            slot = {"x": task["x"], "y": task["y"]}
-            form = {"x": agent["x"], "y": agent["y"]}
+            slot = (task["x"], task["y"])
         else:
-            k = members.index(me)
-            slot = ring(task["x"], task["y"], k, len(members), spacing)
-            form = ring(agent["x"], agent["y"], k, len(members), spacing)
+            where = {m: formed.get(m, (plan["robots"][m]["x"], plan["robots"][m]["y"])) for m in members}
+            slot = enclose((task["x"], task["y"]), members, where, spacing, GAP * spacing, agent)[me]
+        form = formed.get(me, (plan["robots"][me]["x"], plan["robots"][me]["y"]))
         alive = sorted(r for r in plan["robots"] if r not in set(lost))
         return {
             "group": index,
@@ -161,10 +173,9 @@ def role_of(plan: Plan, me: str, lost: Sequence[str], spacing: float) -> dict[st
             "task": task["id"],
             "mates": [m for m in g["members"] if m != me],
             "others": [r for r in alive if r != me],
-            "slot": slot,
-            "form": form,
+            "slot": {"x": round(slot[0], 6), "y": round(slot[1], 6)},
+            "form": {"x": round(form[0], 6), "y": round(form[1], 6)},
             "first": not lost,
             "key": key_of(lost),
         }
     return None
-

@@ -96,6 +96,25 @@ def test_choose_carry_direction_picks_the_nearer_wall(tmp_path: Path) -> None:
     assert near_minus_x.outputs("r2") == {"direction": "right"}
 
 
+def test_choose_carry_direction_toward_a_point(tmp_path: Path) -> None:
+    """Issue 10: with `toward` (own start frame: r1 starts facing +y, so x is its right) the side
+    of that point wins over the nearer wall, for a team that claimed a wall."""
+    top = machine_file(tmp_path, """
+        params: {toward: {type: list, default: []}}
+        vars: {direction: ""}
+        outcomes: [chosen, failure, timeout]
+        outputs: {direction: "${vars.direction}"}
+        timer: 30
+        states:
+          call: {do: choose_carry_direction, with: {toward: "${params.toward}"}, save: {direction: direction},
+                 on: {chosen: chosen, failure: failure}}
+    """)
+    away_from_the_near_wall = run_in_scene(top, at_table(r2=None), params={"toward": [0.5, 3.0]})
+    assert away_from_the_near_wall.outputs() == {"direction": "left"}, "the table's near wall is on r1's right"
+    toward_it = run_in_scene(top, at_table(r2=None), params={"toward": [2.0, -1.0]})
+    assert toward_it.outputs() == {"direction": "right"}
+
+
 @pytest.mark.parametrize(("table_x", "outcome", "steps"),
                          [(0.6, "not_reached", 10), (1.85, "not_reached", 5), (2.07, "reached", 0)])
 def test_table_at_wall(tmp_path: Path, table_x: float, outcome: str, steps: int) -> None:

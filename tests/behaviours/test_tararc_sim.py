@@ -102,3 +102,21 @@ def test_a_member_falls_and_the_nearest_group_lends_one(
     groups = [g["members"] for g in agents["r1"]["outputs"]["plan"]["groups"]]
     assert groups == [["r1", "r4"], ["r3", "r5"]]
     assert all(agents[r]["outputs"]["outcomes"] == [True, True] for r in ("r1", "r3", "r4", "r5"))
+
+
+@pytest.mark.slow
+def test_a_robot_failing_while_the_team_shares_goes_without_it(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    """r6 fails (`--fail`) before it says its state: the others give it up after `silence` and the
+    five left make the plan, move and complete both targets instead of waiting for it until the
+    exchange's limit."""
+    scenario = tmp_path / "team.yaml"
+    scenario.write_text(TEAM.split("failures:")[0], encoding="utf-8")
+    agents = run(capsys, tmp_path, "--scenario", scenario, "--fail", "r6@0.05")["agents"]
+    assert agents["r6"]["failed"]
+    plan = agents["r1"]["outputs"]["plan"]
+    assert sorted(plan["robots"]) == ["r1", "r2", "r3", "r4", "r5"]
+    for name in ("r1", "r2", "r3", "r4", "r5"):
+        assert agents[name]["outcome"] == "done"
+        assert agents[name]["outputs"]["outcomes"] == [True, True]

@@ -69,15 +69,21 @@ def test_the_order_losses_are_heard_in_does_not_matter() -> None:
     assert key_of([]) == "k0" and key_of(["r1"]) != key_of(["r2"])
 
 
-def test_roles_place_members_on_a_ring() -> None:
+def test_roles_place_members_by_where_they_stand() -> None:
     plan = make_plan(states(), TASKS)
     agent = role_of(plan, "r2", [], spacing=1.0)
     member = role_of(plan, "r4", [], spacing=1.0)
     assert agent is not None and member is not None
     assert agent["role"] == "agent" and agent["slot"] == {"x": -6.0, "y": 0.0}
+    assert agent["form"] == {"x": -1.0, "y": 0.0}  # the agent forms up where it stands
     assert agent["mates"] == ["r3", "r4"] and agent["others"] == ["r0", "r1", "r3", "r4"]
-    assert member["slot"]["x"] == pytest.approx(-6 + math.cos(math.pi))
-    assert member["form"]["x"] == pytest.approx(-1 + math.cos(math.pi))
+    # r4 stands at (-2, -1), south-west of its agent r2 (-1, 0): its place is on that side, 1 m off
+    assert math.dist((member["form"]["x"], member["form"]["y"]), (-1, 0)) == pytest.approx(1.0)
+    assert member["form"]["x"] < -1.5 and member["form"]["y"] < -0.5
+    # round the task (-6, 0), coming from the east: r3 and r4 either side of the way in
+    slots = [role_of(plan, r, [], 1.0)["slot"] for r in ("r3", "r4")]  # type: ignore[index]
+    assert all(math.dist((s["x"], s["y"]), (-6, 0)) == pytest.approx(1.0) for s in slots)
+    assert sorted(s["y"] > 0 for s in slots) == [False, True] and all(s["x"] > -6 - 1e-9 for s in slots)
     assert role_of(after_losses(plan, ["r4"], 2), "r4", ["r4"], 1.0) is None
 
 
