@@ -17,6 +17,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import subprocess
 import sys
 import time
 from dataclasses import replace
@@ -40,6 +41,14 @@ def run_bench(config: Config, executor: str = "local", workers: int = 2) -> list
 def _load() -> str:
     one, five, fifteen = os.getloadavg()
     return f"load average {one:.2f}, {five:.2f}, {fifteen:.2f}"
+
+
+def _commit() -> str:
+    """The commit the campaign ran at (with `+` when the work tree had changes), for the record."""
+    def git(*args: str) -> str:
+        return subprocess.run(["git", "-C", str(ROOT), *args], capture_output=True, text=True).stdout.strip()
+
+    return git("rev-parse", "--short", "HEAD") + ("+" if git("status", "--porcelain", "--untracked-files=no") else "")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -81,11 +90,11 @@ def main(argv: list[str] | None = None) -> int:
             return 2
         command = " ".join(["tools/room_bench.py", *(argv if argv is not None else sys.argv[1:])])
         saved = {"command": command, "wall": time.perf_counter() - started, "workers": args.workers,
-                 "load": load, "results": results}
+                 "load": load, "commit": _commit(), "results": results}
         args.raw.parent.mkdir(parents=True, exist_ok=True)
         args.raw.write_text(json.dumps(saved, indent=1) + "\n", encoding="utf-8")
     lines = write(saved["results"], args.doc, args.figures, saved["command"], saved["wall"], saved["workers"],
-                  saved["load"])
+                  f"{saved['load']}; at commit {saved.get('commit', '?')}")
     print("\n".join(lines))
     print(f"wrote {args.doc} and {args.figures} ({saved['wall'] / 60:.1f} min)", file=sys.stderr)
     return 0
