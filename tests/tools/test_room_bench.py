@@ -99,7 +99,7 @@ def test_the_report_goes_between_its_markers(tmp_path: Path) -> None:
     write(results, doc, tmp_path / "fig", "tools/room_bench.py", 600.0, 2, "load average 1.00")
     text = doc.read_text(encoding="utf-8")
     assert text.startswith("# Room\n\nbefore\n<!-- room_bench:start -->") and text.endswith("end -->\nafter\n")
-    assert "old" not in text and "**1 of 2 cleared within 35 simulated minutes** (50 %" in text
+    assert "old" not in text and "**1 of 2 cleared** within 35 simulated minutes (50 %" in text
     assert "mid-carry: 0/1; spare: 1/1" in text
     assert "rooms without failure, lossless (median): 2: 122 s (1/1 cleared), 3: 124 s (2/2 cleared)" in text
     assert "- trial 1 (target, seed 1): gaps 0.01, 0.90, 0.02 m" in text

@@ -12,9 +12,9 @@ TARGET = "target"  # 3 tables, 6 to 8 robots, one random failure each, lossless:
 
 @dataclass(frozen=True)
 class Config:
-    target_rooms: int = 16  # seeds first_seed.. , N cycling 6, 7, 8
+    target_rooms: int = 14  # seeds first_seed.. , N cycling 6, 7, 8
     ks: tuple[int, ...] = (2, 3, 4, 5)  # time against K: N = 2K, no failure
-    k_seeds: int = 2
+    k_seeds: int = 1
     ns: tuple[int, ...] = (6, 7, 8, 9)  # time against N: K = 3, no failure
     loss_rooms: int = 2  # K = 3, N = 7, 30 % radio loss: one without failure, one with
     max_time: float = 2100.0  # the 35 simulated minutes

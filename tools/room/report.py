@@ -84,7 +84,11 @@ def _row(r: Result) -> str:
 
 def lines_for(results: list[Result], command: str, wall: float, workers: int, load: str) -> list[str]:
     target = [r for r in results if r["experiment"] == TARGET]
-    ok = [r for r in target if r["cleared"] and r["clear_time"] is not None and r["clear_time"] <= LIMIT]
+    cap = min([LIMIT, *(r.get("max_time", LIMIT) for r in results)])
+    ok = [r for r in target if r["cleared"] and r["clear_time"] is not None and r["clear_time"] <= cap]
+    within = ("35 simulated minutes" if cap >= LIMIT else
+              f"{cap / 60:.0f} simulated minutes (the campaign's cap, `--max-time {cap:.0f}`; the issue allows 35, "
+              "so a room not cleared by the cap counts as not cleared: a lower bound)")
     hits = sum(r["collisions"] for r in results)
     walls = [r["wall"] for r in target]
     out = [
@@ -99,7 +103,7 @@ def lines_for(results: list[Result], command: str, wall: float, workers: int, lo
         "carries, the failure).",
         "",
         f"- **Target rooms** (3 tables, 6-8 robots, one robot failing at a random time in 5-150 s, "
-        f"lossless): **{len(ok)} of {len(target)} cleared within 35 simulated minutes** "
+        f"lossless): **{len(ok)} of {len(target)} cleared** within {within} "
         f"({100 * len(ok) / max(1, len(target)):.0f} %; issue target: >= 95 %).",
         f"- Robot-robot collisions, all rooms: **{hits}** (target 0); rooms with any: "
         f"{sum(1 for r in results if r['collisions'])} of {len(results)}.",

@@ -125,7 +125,7 @@ def run_room_trial(trial: RoomTrial) -> dict[str, Any]:
         result = run_trial(spec, line)
     sc = trial.scenario
     head = {"experiment": trial.experiment, "x": trial.x, "seed": trial.seed, "k": len(sc["tables"]),
-            "n": len(sc["robots"]), "loss": trial.radio_loss,
+            "n": len(sc["robots"]), "loss": trial.radio_loss, "max_time": trial.max_time,
             "room": [sc["room"]["width"], sc["room"]["depth"]]}
     return {**head, **measure(line, result.score, sc, result.outcomes, result.time, result.error),
             "wall": round(result.wall, 2)}
