@@ -87,8 +87,8 @@ def lines_for(results: list[Result], command: str, wall: float, workers: int, lo
     cap = min([LIMIT, *(r.get("max_time", LIMIT) for r in results)])
     ok = [r for r in target if r["cleared"] and r["clear_time"] is not None and r["clear_time"] <= cap]
     within = ("35 simulated minutes" if cap >= LIMIT else
-              f"{cap / 60:.0f} simulated minutes (the campaign's cap, `--max-time {cap:.0f}`; the issue allows 35, "
-              "so a room not cleared by the cap counts as not cleared: a lower bound)")
+              f"{cap / 60:.0f} simulated minutes (the campaign's cap, `--max-time {cap:.0f}`; the issue "
+              "allows 35, so a room not cleared by the cap counts as not cleared: a lower bound)")
     hits = sum(r["collisions"] for r in results)
     walls = [r["wall"] for r in target]
     out = [
