@@ -82,7 +82,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.saved:
         saved = json.loads(args.saved.read_text(encoding="utf-8"))
     else:
-        load = _load()
+        load, commit = _load(), _commit()
         started = time.perf_counter()
         try:
             results = run_bench(config, args.executor, args.workers)
@@ -91,7 +91,7 @@ def main(argv: list[str] | None = None) -> int:
             return 2
         command = " ".join(["tools/room_bench.py", *(argv if argv is not None else sys.argv[1:])])
         saved = {"command": command, "wall": time.perf_counter() - started, "workers": args.workers,
-                 "load": load, "commit": _commit(), "results": results}
+                 "load": load, "commit": commit, "results": results}
         args.raw.parent.mkdir(parents=True, exist_ok=True)
         args.raw.write_text(json.dumps(saved, indent=1) + "\n", encoding="utf-8")
     lines = write(saved["results"], args.doc, args.figures, saved["command"], saved["wall"], saved["workers"],

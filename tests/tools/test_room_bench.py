@@ -65,7 +65,8 @@ def test_the_trace_gives_the_clearing_time_and_the_failure_phase() -> None:
     records = [
         _event(1.0, "r1", "assign", job={"role": "leader"}), _event(1.0, "r2", "assign", job={"role": "assistant"}),
         _event(1.0, "r3", "assign", job={"role": "spare"}), _event(1.0, "r4", "assign", job={"role": "leader"}),
-        {"t": 20.0, "agent": "r1", "path": ["clear_room", "work", "carry", "x", "lift_table"], "kind": "enter"},
+        {"t": 20.0, "agent": "r1", "path": ["clear_room", "work", "carry", "lift", "lift"], "kind": "enter",
+         "do": "lift_table"},
         {"t": 30.0, "agent": "r2", "path": ["clear_room"], "kind": "failed"},
         _event(90.0, "r1", "finished", carries=[carry]),
         _event(95.0, "r4", "give_up", carries=[{**carry, "table": "table2", "outcome": "dropped"}]),

@@ -16,7 +16,7 @@ from behaviours.trial import TrialSpec, run_trial
 
 MACHINE = Path(__file__).resolve().parents[2] / "machines" / "clear_room.yaml"
 CARRY_ENDS = ("finished", "give_up")  # clear_room's states that append to vars.carries
-LIFT = "lift_table"  # a robot in it holds (or is about to hold) its table: the carry has begun
+LIFT = "lift_table"  # a robot calling it lifts its table: the carry has begun
 ROUTINE = frozenset({"done", "sent", "join", "stopped", "passed", "heard", "received", "stepped", "lifted",
                      "landed", "measured", "centred", "aligned", "found", "seen", "chosen", "colour"})
 
@@ -49,7 +49,7 @@ class RoomLine:
         kind, path, agent = record["kind"], record["path"], record["agent"]
         if kind == "failed":
             self.failed.setdefault(agent, record["t"])
-        elif kind == "enter" and path[-1] == LIFT:
+        elif kind == "enter" and record.get("do") == LIFT:
             self.lifted.setdefault(agent, record["t"])
         elif (kind == "exit" and len(path) > 4 and path[1] == "work" and path[2] == "carry"
               and str(record.get("event")).isidentifier() and record.get("event") not in ROUTINE):
