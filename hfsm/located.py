@@ -6,6 +6,7 @@ import types
 from typing import Annotated, Any, TypeVar, Union, get_args, get_origin
 
 from pydantic import BaseModel, Tag, ValidationError
+from pydantic.fields import FieldInfo
 from pydantic_core import ErrorDetails
 
 from hfsm.errors import Finding, UserError
@@ -92,6 +93,8 @@ def _message(model: type[BaseModel], path: Path_, err: ErrorDetails) -> str:
         return f"'{last}' must be {_COUNTS[last]} or a '${{…}}' expression, not {_describe(value)}" + _wrap(
             value
         )
+    if kind in _BOUNDS or kind in ("finite_number", "too_long", "value_error", "refused"):
+        return _refused(model, path, where, err)
     if kind == "too_short":
         least = (err.get("ctx") or {}).get("min_length", 1)
         return f"{where} must have at least {least} {'entry' if least == 1 else 'entries'}, not none"
@@ -110,6 +113,56 @@ def _message(model: type[BaseModel], path: Path_, err: ErrorDetails) -> str:
         ]
         return f"{where}: {err['msg'].lower()}, not {_describe(value)}" + did_you_mean(str(value), expected)
     return f"{where}: {err['msg']}"
+
+
+def _refused(model: type[BaseModel], path: Path_, where: str, err: ErrorDetails) -> str:
+    """A value out of its range (every bound of its field, the value, the field's description), or
+    refused by a validator (its message, which names the value when it is a `refused` error)."""
+    kind, value = err["type"], err.get("input")
+    if kind in _BOUNDS:
+        field = _field(model, err["loc"])
+        note = f" ({field.description})" if field is not None and field.description else ""
+        return f"{where} must be {_range(field, err)}, not {_describe(value)}{note}"
+    if kind == "finite_number":
+        return f"{where} must be a finite number, not {_describe(value)}"
+    if kind == "too_long":
+        most = (err.get("ctx") or {}).get("max_length")
+        return f"{where} must have at most {most} entries, not {len(value)}"
+    message = err["msg"].removeprefix("Value error, ")
+    return message if kind == "refused" or not path else f"{where}: {message}"
+
+
+_BOUNDS = {"greater_than": "gt", "greater_than_equal": "ge", "less_than": "lt", "less_than_equal": "le"}
+_SIGNS = {"gt": ">", "ge": ">=", "lt": "<", "le": "<="}
+
+
+def _range(field: FieldInfo | None, err: ErrorDetails) -> str:
+    """`> 0 and <= 3`: every bound of the field (the error's own when the field is not found)."""
+    bounds: dict[str, Any] = {}
+    for item in field.metadata if field is not None else ():
+        for name in _SIGNS:
+            if getattr(item, name, None) is not None:
+                bounds[name] = getattr(item, name)
+    if not bounds:
+        bounds = {_BOUNDS[err["type"]]: (err.get("ctx") or {}).get(_BOUNDS[err["type"]])}
+    return " and ".join(f"{_SIGNS[name]} {_number(bound)}" for name, bound in bounds.items())
+
+
+def _number(value: Any) -> str:
+    return f"{value:g}" if isinstance(value, float) else str(value)
+
+
+def _field(model: type[BaseModel], loc: tuple[int | str, ...]) -> FieldInfo | None:
+    """The field an error's location ends at, when it is a model's."""
+    current: Any = model
+    for part in loc[:-1]:
+        current = _step(current, part)
+    current = _only_model(_strip(current)) or _strip(current)
+    if isinstance(current, type) and issubclass(current, BaseModel):
+        for name, field in current.model_fields.items():
+            if loc[-1] in (name, field.alias):
+                return field
+    return None
 
 
 _CALL_ONLY = ("do", "with", "save", "retry", "choose")

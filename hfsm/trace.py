@@ -53,14 +53,18 @@ class JsonlTrace:
     encoder is made once (`json.dumps` makes one a call); a record's pieces are kept as it yields
     them, or as the text `write_line` is given (records the engine encoded itself, the same bytes:
     hfsm.runtime.records). At the end of a tick in which `JOIN_PIECES` are kept (few, so that they
-    stay in the processor's cache), they are joined and written to the file's buffer; what the
-    buffer holds is handed to the system once it holds `SAVE_CHARS`, or `SAVE_SECONDS` after the
-    last time (a killed run loses at most that much, never half a line).
+    stay in the processor's cache), or every `_every` ticks, they are joined and written to the
+    file's buffer; what the buffer holds is handed to the system once it holds `SAVE_CHARS`, or
+    `SAVE_SECONDS` after the last time (a killed run loses about that much, never half a line).
+    The clock is read only then: `_every` ticks are as many as lately took `LOOK_SHARE` of
+    `SAVE_SECONDS` (1 to `LOOK_MOST`), since reading it took a tenth of a quick tick's trace.
     """
 
     SAVE_SECONDS = 0.25
     SAVE_CHARS = 1 << 18  # below the file's buffer, so that it never writes half a line itself
     JOIN_PIECES = 256
+    LOOK_SHARE = 0.04
+    LOOK_MOST = 64
 
     def __init__(self, path: Path) -> None:
         self.path = path
@@ -68,7 +72,8 @@ class JsonlTrace:
         self._pieces: list[str] = []
         self.write_line: Callable[[str], None] = self._pieces.append  # a line or more, each ended by "\n"
         self._unsaved = 0
-        self._saved_at = time.monotonic()
+        self._saved_at = self._looked_at = time.monotonic()
+        self._every = self._due = 1  # ticks between looks at the clock, and until the next one
 
     def write(self, record: dict[str, Any]) -> None:
         pieces = self._pieces
@@ -77,7 +82,8 @@ class JsonlTrace:
 
     def flush(self) -> None:
         """End of a tick: its lines are kept, written, and handed to the system, each when due."""
-        if len(self._pieces) >= self.JOIN_PIECES or time.monotonic() - self._saved_at >= self.SAVE_SECONDS:
+        self._due -= 1
+        if self._due <= 0 or len(self._pieces) >= self.JOIN_PIECES:
             self._write()
 
     def _write(self, save: bool = False) -> None:
@@ -87,6 +93,12 @@ class JsonlTrace:
             self._file.write(text)
             self._unsaved += len(text)
         now = time.monotonic()
+        ticks = self._every - self._due
+        if ticks > 0:
+            took = now - self._looked_at
+            every = int(self.SAVE_SECONDS * self.LOOK_SHARE * ticks / took) if took > 0 else self.LOOK_MOST
+            self._every = self._due = max(1, min(self.LOOK_MOST, every))
+            self._looked_at = now
         if save or self._unsaved >= self.SAVE_CHARS or now - self._saved_at >= self.SAVE_SECONDS:
             self._file.flush()
             self._unsaved = 0

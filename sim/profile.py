@@ -69,12 +69,13 @@ ROBOT_COLOURS: tuple[tuple[float, float, float], ...] = (
     (0.60, 0.20, 0.70),
     (0.90, 0.85, 0.10),
     (0.85, 0.10, 0.10),
-    # rooms of several pairs (issue 10): four more hues, each at least 14 OpenCV hue units (the
+    # rooms of several pairs (issue 10): five more hues, each at least 14 OpenCV hue units (the
     # spacing of the first three) from every other and from the table's blue (115)
     (0.51, 0.85, 0.13),
     (0.13, 0.85, 0.61),
     (0.13, 0.75, 0.85),
     (0.85, 0.13, 0.61),
+    (0.37, 0.13, 0.85),
 )
 TABLE_COLOUR: tuple[float, float, float] = (0.05, 0.20, 0.90)
 FLOOR_COLOUR: tuple[float, float, float] = (0.42, 0.32, 0.24)

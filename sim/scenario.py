@@ -26,12 +26,14 @@ from sim.specs import (
     FailureSpec,
     Jitter,
     LinearBattery,
+    Refusal,
     RobotName,
     RobotStart,
     Room,
     Strict,
     TableSpec,
     Target,
+    refuse,
 )
 
 __all__ = [
@@ -86,37 +88,46 @@ class Scenario(Strict):
     def _known_robots(cls, failures: list[FailureAt | FailureRate], info: ValidationInfo
                       ) -> list[FailureAt | FailureRate]:
         robots = info.data.get("robots") or {}
+        refusals: list[Refusal] = []
         for i, failure in enumerate(failures):
-            named = [failure.robot] if isinstance(failure, FailureAt) else failure.robots or []
-            for name in named:
-                if name not in robots:
-                    message = f"[{i}] names no robot of the scenario ({', '.join(robots)})"
-                    raise PydanticCustomError("unknown_robot", message)
+            named = [(("robot",), failure.robot)] if isinstance(failure, FailureAt) else [
+                (("robots", k), name) for k, name in enumerate(failure.robots or [])]
+            known = ", ".join(robots)
+            refusals += [((i, *at), f"no robot named '{name}' in the scenario (robots: {known})", name)
+                         for at, name in named if name not in robots]
+        refuse("failures", refusals)
         return failures
 
     @model_validator(mode="after")
     def _consistent(self) -> Scenario:
+        """Tables, targets and robots in the room, unique task ids: every problem at its value."""
+        refusals: list[Refusal] = []
         if self.table is not None and self.tables is not None:
-            raise ValueError("give either `table:` (one table) or `tables:` (a list), not both")
+            both = "give either `table:` (one table) or `tables:` (a list), not both"
+            refusals.append((("tables",), both, None))
         ids = self.task_ids()
-        repeated = sorted({i for i in ids if ids.count(i) > 1})
-        if repeated:
-            raise ValueError(f"task ids must be unique across tables and targets: {', '.join(repeated)}")
-        half_w, half_d = self.room.width / 2, self.room.depth / 2
-        for i, t in enumerate(self.all_tables):
+        places: list[tuple[int | str, ...]] = [("tables", i) if self.tables is not None else ("table",)
+                                               for i in range(len(self.all_tables))]
+        places += [("targets", j) for j in range(len(self.targets))]
+        unique = "ids must be unique across tables and targets"
+        refusals += [((*at, "id"), f"task id '{i}' is used before: {unique}", i)
+                     for k, (at, i) in enumerate(zip(places, ids, strict=True)) if i in ids[:k]]
+        room = f"{self.room.width:g} x {self.room.depth:g} m"
+        for at, t in zip(places, self.all_tables, strict=False):
             c, s = abs(math.cos(math.radians(t.yaw))), abs(math.sin(math.radians(t.yaw)))
-            reach_x, reach_y = (c * t.length + s * t.width) / 2, (s * t.length + c * t.width) / 2
-            if abs(t.x) + reach_x > half_w + 1e-9 or abs(t.y) + reach_y > half_d + 1e-9:
-                raise ValueError("table does not fit inside the room" if self.tables is None
-                                 else f"table {ids[i]!r} does not fit inside the room")
-        for target in self.targets:
-            if abs(target.x) > half_w or abs(target.y) > half_d:
-                raise ValueError(f"target {target.id!r} is outside the room")
+            reach = {"x": (c * t.length + s * t.width) / 2, "y": (s * t.length + c * t.width) / 2}
+            refusals += _outside(at, t, reach, self.room, f"for the table ({t.length:g} x {t.width:g} m, yaw "
+                                 f"{t.yaw:g}) to fit inside the room ({room})")
+        for j, target in enumerate(self.targets):
+            refusals += _outside(("targets", j), target, {"x": 0.0, "y": 0.0}, self.room,
+                                 f"inside the room ({room})")
         slack = self.jitter.position  # the seeded jitter may move a start this far either way
-        inner_w, inner_d = half_w - WALL_CLEARANCE, half_d - WALL_CLEARANCE
         for name, start in self.robots.items():
-            if abs(start.x) + slack > inner_w or abs(start.y) + slack > inner_d:
-                raise ValueError(f"robot {name!r} could start outside the room or inside a wall")
+            reach = {"x": WALL_CLEARANCE + slack, "y": WALL_CLEARANCE + slack}
+            refusals += _outside(("robots", name), start, reach, self.room,
+                                 f"for the robot to start inside the room ({room}) {WALL_CLEARANCE:g} m "
+                                 f"from its walls, with {slack:g} m of jitter")
+        refuse("Scenario", refusals)
         return self
 
     @property
@@ -184,6 +195,18 @@ class Scenario(Strict):
             if item[1] not in earliest or item[0] < earliest[item[1]][0]:
                 earliest[item[1]] = item
         return [item for item in due if earliest[item[1]] is item]
+
+
+def _outside(at: tuple[int | str, ...], thing: Any, reach: dict[str, float], room: Room, why: str
+             ) -> list[Refusal]:
+    """`x` and `y` of a thing that reaches `reach` metres either way: those that leave the room."""
+    out: list[Refusal] = []
+    for axis, half in (("x", room.width / 2), ("y", room.depth / 2)):
+        value, most = getattr(thing, axis), half - reach[axis]
+        if abs(value) > most + 1e-9:
+            allowed = f"from {-most:g} to {most:g}" if most >= 0 else "impossible: it is too large"
+            out.append(((*at, axis), f"'{axis}' must be {allowed} {why}, not {value:g}", value))
+    return out
 
 
 def scenario_from_dict(data: Mapping[str, Any]) -> Scenario:

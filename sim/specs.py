@@ -8,11 +8,32 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Discriminator, Field, StringConstraints, Tag, model_validator
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Discriminator,
+    Field,
+    StringConstraints,
+    Tag,
+    ValidationError,
+    model_validator,
+)
+from pydantic_core import InitErrorDetails, PydanticCustomError
 
 RobotName = Annotated[str, StringConstraints(pattern=r"^[a-z][a-z0-9_]*$")]
 TaskId = Annotated[str, StringConstraints(pattern=r"^[a-z][a-z0-9_]*$")]
 Difficulty = Annotated[float, Field(gt=0.0, lt=1.0, description="TARARC's d_t, in the open interval (0, 1)")]
+
+
+Refusal = tuple[tuple[int | str, ...], str, Any]  # where (keys below the model), why, the value
+
+
+def refuse(title: str, refusals: list[Refusal]) -> None:
+    """Raise every refusal at once, each at its own place (a file's reader shows its line)."""
+    if refusals:
+        raise ValidationError.from_exception_data(title, [
+            InitErrorDetails(type=PydanticCustomError("refused", why), loc=loc, input=value)
+            for loc, why, value in refusals])
 
 
 class Strict(BaseModel):
@@ -40,7 +61,9 @@ class TableSpec(Strict):
     @model_validator(mode="after")
     def _long_side_is_length(self) -> TableSpec:
         if self.width > self.length:
-            raise ValueError("table width must not exceed its length (length is the long side)")
+            why = (f"'width' must be <= the length, {self.length:g} (length is the long side), "
+                   f"not {self.width:g}")
+            refuse("TableSpec", [(("width",), why, self.width)])
         return self
 
 
@@ -83,8 +106,10 @@ class Eq5Battery(Strict):
 
     @model_validator(mode="after")
     def _weights_sum_to_one(self) -> Eq5Battery:
-        if abs(self.w_tim + self.w_dist + self.w_sped - 1.0) > 1e-9:
-            raise ValueError("eq. 5 weights w_tim + w_dist + w_sped must sum to 1")
+        total = self.w_tim + self.w_dist + self.w_sped
+        if abs(total - 1.0) > 1e-9:
+            raise ValueError(f"eq. 5 weights w_tim + w_dist + w_sped must sum to 1, not {total:g} "
+                             f"({self.w_tim:g} + {self.w_dist:g} + {self.w_sped:g})")
         return self
 
 

@@ -15,6 +15,7 @@ from hfsm.load import load
 from hfsm.registry import Registry
 from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, run
+from hfsm.trace import TraceSink
 from sim import World, load_scenario
 from sim.scenario import FailureAt, Scenario
 
@@ -64,7 +65,7 @@ def pairs_told(pairs: dict[str, tuple[str, str]], channel: str = "") -> dict[str
 
 def run_room(scenario_name: str, seed: int, tasks: dict[str, str], max_time: float = 2400.0, *,
              told: dict[str, dict[str, Any]] | None = None, radio_loss: float = 0.0,
-             failures: dict[str, float] | None = None) -> RoomRun:
+             failures: dict[str, float] | None = None, trace: TraceSink | None = None) -> RoomRun:
     """Run move_furniture, robot `r` told to move the table `tasks[r]` (robots not in `tasks`:
     no table named) and the params `told[r]`; `failures`: robot -> the second it fails."""
     reg = Registry.discover()
@@ -82,7 +83,7 @@ def run_room(scenario_name: str, seed: int, tasks: dict[str, str], max_time: flo
         starts = [world.truth.table_pose(i)[:2] for i in range(len(world.truth.tables))]
         options = RunOptions(root.name, list(world.robots), machine_params(root, {}), seed, max_time,
                              agent_params=agent_params)
-        result = run(Program(loaded.machines, reg, 0.05), SimWorld(world), options)
+        result = run(Program(loaded.machines, reg, 0.05), SimWorld(world), options, trace)
         ends = [world.truth.table_pose(i)[:2] for i in range(len(world.truth.tables))]
         score = world.score()
         holding = {name: bool(robot.holding()) for name, robot in world.robots.items()}
@@ -100,6 +101,8 @@ def run_room(scenario_name: str, seed: int, tasks: dict[str, str], max_time: flo
 PAIRS = {  # scenario -> table -> (leader, assistant), as a team would form them
     "room_2_tables": {"table1": ("r1", "r2"), "table2": ("r3", "r4")},
     "room_3_pairs": {"table1": ("r1", "r2"), "table2": ("r3", "r4"), "table3": ("r5", "r6")},
+    "room_5_pairs": {"table1": ("r1", "r2"), "table2": ("r3", "r4"), "table3": ("r5", "r6"),
+                     "table4": ("r7", "r8"), "table5": ("r9", "r10")},
 }
 
 
@@ -135,11 +138,12 @@ def main(argv: list[str] | None = None) -> None:
         score = room.score
         ok = bool(score["success"])
         cleared += ok
-        outcomes = " ".join(room.outcomes[r] for r in sorted(room.outcomes))
-        roles = " ".join(room.roles[r][:1].upper() or "-" for r in sorted(room.roles))
+        robots = sorted(room.outcomes, key=lambda r: (len(r), r))  # r2 before r10
+        outcomes = " ".join(room.outcomes[r] for r in robots)
+        roles = " ".join(room.roles[r][:1].upper() or "-" for r in robots)
         gaps = " / ".join(f"{d:.3f}" for d in score["table_wall_distances"])
         print(f"| {seed} | {outcomes} | {roles} | {gaps} | {score['dropped']} | {score['robot_collisions']} "
-              f"| {' '.join(f'{room.times[r]:.0f}' for r in sorted(room.times))} | {time.monotonic() - start:.0f} |",
+              f"| {' '.join(f'{room.times[r]:.0f}' for r in robots)} | {time.monotonic() - start:.0f} |",
               flush=True)
     print(f"\n{cleared} of {len(seeds)} rooms cleared (every table at a wall, no drop, no robot-robot collision)")
 

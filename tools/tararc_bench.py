@@ -3,6 +3,8 @@
     nice -n 10 .venv/bin/python tools/tararc_bench.py           # the whole bench, docs/TARARC.md
     .venv/bin/python tools/tararc_bench.py --quick              # a smoke run (fewer points, 1 seed)
     .venv/bin/python tools/tararc_bench.py --from docs/results/tararc.json   # the docs again, no run
+    tools/tararc_bench.py --shard 1/2 & tools/tararc_bench.py --shard 2/2   # the first stage in parts
+    tools/tararc_bench.py --merge          # the parts read back, the help trials run, the docs
 
 Table 1 (the six priority orders of 3 tasks), Figure 5 (robot density), Figure 6 (10 to 50
 robots), Figure 7 (robot speed), Figure 8 (4 allocations sharing a history file) and the help
@@ -10,7 +12,8 @@ strategies (every robot of 10 failing once mid-move). Each trial generates its s
 temporary folder and runs seeded; trials run in parallel processes (or on a Dask cluster) through
 tools/sweep.py, and results come back sorted by trial, the same on any number of workers. The help
 trials fail each robot at a time read off the failure-free run of the same seed, so they run
-after the others.
+after the others: shards (`--shard I/N`, as tools/sweep.py makes them) split the first stage, and
+`--merge` reads them back, runs the help trials and writes the docs.
 """
 
 from __future__ import annotations
@@ -27,19 +30,39 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from tools.docsection import write_section  # noqa: E402
-from tools.sweep import SweepError, run_sweep  # noqa: E402
+from tools.sweep import Shard, SweepError, merge_shards, run_sweep, shard_path, write_shard  # noqa: E402
 from tools.tararc.experiments import QUICK, Config, help_trials, main_trials  # noqa: E402
 from tools.tararc.report import write  # noqa: E402
 from tools.tararc.trials import BenchTrial, run_bench_trial  # noqa: E402
 
+LABEL = "tararc"
 
-def run_bench(config: Config, executor: str = "local", workers: int = 2) -> list[dict[str, Any]]:
-    """Every trial's result (wall seconds aside, the same whatever the executor and workers)."""
-    first = main_trials(config)
-    results = run_sweep(run_bench_trial, first, executor=executor, workers=workers, label="tararc")
+
+def first_stage(config: Config, executor: str = "local", workers: int = 2, shard: Shard | None = None,
+                shards: Path | None = None, merge: bool = False) -> list[dict[str, Any]] | None:
+    """Table 1 and Figures 5-8: run (all, or one shard written to `shards`: then None), or with
+    `merge` read back from the shards in `shards`."""
+    trials = main_trials(config)
+    if merge:
+        paths = sorted((shards or Path()).glob(f"{LABEL}-*-of-*.jsonl"))
+        if not paths:
+            raise SweepError(f"no shards of '{LABEL}' in {shards}")
+        return merge_shards(paths)
+    part = run_sweep(run_bench_trial, trials, executor=executor, workers=workers, shard=shard, label=LABEL)
+    if shard is None:
+        return part
+    write_shard(shard_path(shards or Path(), LABEL, shard), part, len(trials))
+    return None
+
+
+def run_bench(config: Config, executor: str = "local", workers: int = 2,
+              first: list[dict[str, Any]] | None = None) -> list[dict[str, Any]]:
+    """Every trial's result (wall seconds aside, the same whatever the executor, workers or shards);
+    `first`: the first stage's results, already run."""
+    results = first if first is not None else first_stage(config, executor, workers) or []
     second: list[BenchTrial] = help_trials(config, results)
     helped = run_sweep(run_bench_trial, second, executor=executor, workers=workers, label="tararc-help")
-    return results + [{**r, "trial": r["trial"] + len(first)} for r in helped]
+    return results + [{**r, "trial": r["trial"] + len(results)} for r in helped]
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -56,6 +79,9 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--perf", type=Path, default=ROOT / "docs" / "PERFORMANCE.md",
                    help="where the bench's wall time is also written")
     p.add_argument("--from", dest="saved", type=Path, help="no run: write the docs again from a --raw file")
+    p.add_argument("--shard", type=Shard.parse, help="run shard I of N (I/N) of the first stage, to --shards")
+    p.add_argument("--merge", action="store_true", help="read the first stage from --shards, run the rest")
+    p.add_argument("--shards", type=Path, default=ROOT / "out" / "shards", help="folder of shard files")
     args = p.parse_args(argv)
     config = replace(QUICK if args.quick else Config(), first_seed=args.first_seed)
     if args.seeds:
@@ -67,7 +93,13 @@ def main(argv: list[str] | None = None) -> int:
     else:
         started = time.perf_counter()
         try:
-            results = run_bench(config, args.executor, args.workers)
+            first = first_stage(config, args.executor, args.workers, args.shard, args.shards, args.merge)
+            if first is None:
+                print(f"wrote shard {args.shard.index}/{args.shard.count} to {args.shards}", file=sys.stderr)
+                return 0
+            results = run_bench(config, args.executor, args.workers, first)
+            if args.merge:  # the first stage ran elsewhere: its time as if it had run here
+                started -= sum(r["wall"] for r in first) / args.workers
         except SweepError as exc:
             print(f"tararc_bench: {exc}", file=sys.stderr)
             return 2

@@ -9,20 +9,27 @@ from behaviours.carry.sensing import edge, extent, side_sign, wall
 from hfsm.primitive import Context, Outcome, primitive
 from sim.perception import WallSeen
 
+MIN_CLOSING = 0.3  # a wall more than ~72 degrees off square to the carry cannot be judged by eye
+
 
 @primitive(outcomes=["chosen", "failure"], outputs=["direction", "distance"], world="sim")
 def choose_carry_direction(
     ctx: Context, *, look_yaw: float = 2.0, look_pitch: float = 0.5, toward: list[float] | None = None
 ) -> str | Outcome:
     """Look left and right along the table's long axis and choose the side whose wall is
-    nearer (a tie goes left); with `toward` ([x, y] m in the own start frame, e.g. a wall
-    segment the team claimed), the side that point lies on. Outputs `direction`
+    nearer (a tie goes left), among the walls the table's end can meet: a wall seen that runs
+    along the carry (one close behind the robot, in a room of many tables) counts only when no
+    other is seen. With `toward` ([x, y] m in the own start frame, e.g. a wall segment the team
+    claimed), the side that point lies on. Outputs `direction`
     ('left'/'right', in this robot's frame) and `distance` (m) to that side's wall (-1: not
     seen). `failure` when no wall is seen on either side and no point is given."""
     body = Body(ctx)
     seen = {side: wall(body, side, look_yaw, look_pitch) for side in ("left", "right")}
     body.look(0.0, 0.0)
     found = {side: w.distance for side, w in seen.items() if w.found}
+    meets = {side: d for side, d in found.items()
+             if side_sign(side) * math.sin(seen[side].normal) >= MIN_CLOSING}
+    found = meets or found
     if toward:
         x, y, yaw = body.odometry()
         across = -math.sin(yaw) * (toward[0] - x) + math.cos(yaw) * (toward[1] - y)
@@ -32,9 +39,6 @@ def choose_carry_direction(
         return "failure"
     side = min(found, key=lambda s: (found[s], s != "left"))
     return Outcome("chosen", direction=side, distance=round(found[side], 3))
-
-
-MIN_CLOSING = 0.3  # a wall more than ~72 degrees off square to the carry cannot be judged by eye
 
 
 def room_to_wall(seen: WallSeen, corners: list[tuple[float, float]], sign: float) -> float:

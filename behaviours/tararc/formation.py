@@ -86,17 +86,31 @@ def _add_row(costs: Sequence[Sequence[float]], i: int, u: list[float], v: list[f
 
 
 def enclose(task: Point, members: Sequence[str], where: Mapping[str, Point], spacing: float,
-            gap: float, came_from: Point) -> dict[str, Point]:
+            gap: float, came_from: Point, bounds: tuple[Point, Point] | None = None) -> dict[str, Point]:
     """Each member's place round the task: m places evenly spaced, the ring turned so that the
-    members split either side of the way from `came_from`, each member on the place that makes the
-    group's total walk least."""
+    members split either side of the way from `came_from` (or turned the least from that so that
+    as few places as can be lie outside `bounds`: a task by a wall), each member on the place that
+    makes the group's total walk least."""
     m = len(members)
     if m == 0:
         return {}
     r = radius(m, spacing, gap)
     back = math.atan2(came_from[1] - task[1], came_from[0] - task[0])
-    start = back + math.pi / m if m > 1 else back
-    places = [on_ring(task, r, start + 2.0 * math.pi * k / m) for k in range(m)]
+    preferred = back + math.pi / m if m > 1 else back
+
+    def ring_at(turn: float) -> list[Point]:
+        return [on_ring(task, r, preferred + turn + 2.0 * math.pi * k / m) for k in range(m)]
+
+    def outside(places: list[Point]) -> int:
+        if bounds is None:
+            return 0
+        (x0, y0), (x1, y1) = bounds
+        e = r / 4.0  # a place a little beyond the box is no nearer a wall than the task is
+        return sum(not (x0 - e <= x <= x1 + e and y0 - e <= y <= y1 + e) for x, y in places)
+
+    turns = sorted((2.0 * math.pi * k / ANGLES / 2.0 * sign for k in range(ANGLES) for sign in (1, -1)),
+                   key=abs)
+    places = min((ring_at(t) for t in turns), key=outside)  # min keeps the first: the least turn
     costs = [[math.dist(where[a], p) for p in places] for a in members]
     return {a: places[k] for a, k in zip(members, assign(costs), strict=True)}
 

@@ -163,7 +163,8 @@ def role_of(plan: Plan, me: str, lost: Sequence[str], spacing: float) -> dict[st
             slot = (task["x"], task["y"])
         else:
             where = {m: formed.get(m, (plan["robots"][m]["x"], plan["robots"][m]["y"])) for m in members}
-            slot = enclose((task["x"], task["y"]), members, where, spacing, GAP * spacing, agent)[me]
+            slot = enclose((task["x"], task["y"]), members, where, spacing, GAP * spacing, agent,
+                           bounds_of(plan))[me]
         form = formed.get(me, (plan["robots"][me]["x"], plan["robots"][me]["y"]))
         alive = sorted(r for r in plan["robots"] if r not in set(lost))
         return {

@@ -78,7 +78,7 @@ class Frame:
         self.up = up
         self._scope: Scope | None = None
         self._prefix: tuple[str, ...] | None = None
-        self.text: str | None = None  # the JSON of its prefix, made by the trace's TextRecords
+        self.text: Any = None  # where it runs, as the trace's TextRecords writes it (a Prefix)
         self.state: RState = machine.initial  # type: ignore[assignment]
         self.deadline: int | None = None  # the machine timer's tick
         self.retry_at: int | None = None  # the tick a retry's delay ends in

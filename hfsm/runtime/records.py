@@ -2,10 +2,11 @@
 
 `Records` builds every record as a dict and hands it to the sink's `write`. `TextRecords` serves a
 sink that also takes lines (`write_line`, such as `JsonlTrace`): the records written on every
-transition (`enter`, and `event` with its `exit`) are written as text from pieces made once (the
-agent's name and the tick's time, a frame's path, names as JSON strings), the same bytes as the
-sink's own encoding of the dict; a record holding a user's values (vars, a barrier's `arrived`)
-and every other kind still go through `write`.
+transition (`enter`, and `event` with its `exit`) are kept as text made once (`Prefix`: everything
+of a record but its time, for each place a machine runs, state and event), and written at the end of
+the tick, all its lines with the tick's time at once: the same bytes as the sink's own encoding of
+the dicts. A record holding a user's values (vars, a barrier's `arrived`) and every other kind still
+go through `write`, after the lines kept before them.
 """
 
 from __future__ import annotations
@@ -14,7 +15,8 @@ from json.encoder import encode_basestring
 from typing import Any, Protocol
 
 from hfsm.runtime.agent import Agent, Event, Frame
-from hfsm.runtime.states import RState
+from hfsm.runtime.states import RRegion, RState
+from hfsm.runtime.ticktime import TickTimes, seconds_text
 from hfsm.trace import TraceSink, encode
 
 
@@ -39,6 +41,18 @@ class Records:
 
     def write(self, agent: Agent, path: list[str], kind: str, **extra: Any) -> None:
         self.sink.write({"t": self.clock.time, "agent": agent.name, "path": path, "kind": kind, **extra})
+
+    def put(self, record: dict[str, Any]) -> None:
+        """A record made elsewhere (a world's), written as it is."""
+        self.sink.write(record)
+
+    def flush(self) -> None:
+        """The end of a tick that wrote something (or of the run): the sink's flush."""
+        self.sink.flush()
+
+    def drain(self) -> None:
+        """Nothing kept back: the lines kept go to the sink, without its flush (the start's tick, whose
+        flush is the next tick's, and the end of the run, whose sink is closed by whoever opened it)."""
 
     def enter(self, frame: Frame, state: RState) -> None:
         """A state entered: its callee, when the state's and the machine's timers fire (seconds),
@@ -78,120 +92,177 @@ class _Json(dict[Any, str]):
         return text
 
 
-def seconds_text(ticks: int, dt: float) -> str:
-    """`encode(round(ticks * dt, 9))`: a tick's time in seconds (as Core.time) as JSON text.
+class Prefix:
+    """One place where machines run (an agent's top, or a state or region below another place):
+    the text of its records after their time, made once and shared by every frame run there."""
 
-    `round` and `f"{x:.9f}"` make the same correctly rounded 9 decimals; from 1e-4 to 1e6 s they have
-    at most 15 digits, so `repr` of the rounded float writes them back, without an exponent: the
-    rounding's float and its `repr` are not needed (half the cost)."""
-    x = ticks * dt
-    if 1e-4 <= x < 1e6:
-        text = f"{x:.9f}".rstrip("0")
-        return text + "0" if text[-1] == "." else text
-    return float.__repr__(round(x, 9))
+    __slots__ = ("arcs", "below", "enters", "head", "json")
+
+    def __init__(self, head: str, json: _Json) -> None:
+        self.head = head  # `, "agent": …, "path": [… , ` (the path up to the state)
+        self.json = json
+        self.enters: dict[RState, tuple[str, str]] = {}  # state -> `…, "kind": "enter", "do": …`, ended
+        self.arcs: dict[RState, dict[str, tuple[Any, tuple[str, str]]]] = {}  # event -> target, lines
+        self.below: dict[RState | RRegion, Prefix] = {}
+
+    def inner(self, where: RState | RRegion, name: str) -> Prefix:
+        """The place below this one's state or region `where` (named `name` in paths)."""
+        inner = self.below[where] = Prefix(f"{self.head}{self.json[name]}, ", self.json)
+        return inner
+
+    def enter(self, state: RState) -> tuple[str, str]:
+        """A state's `enter` line without its deadlines and its end; and ended."""
+        json = self.json
+        do = f', "do": {json[state.do]}' if state.do else ""
+        text = f'{self.head}{json[state.name]}], "kind": "enter"{do}'
+        pair = self.enters[state] = text, text + _END
+        return pair
+
+    def arc(self, state: RState, event: str, target: Any) -> tuple[Any, tuple[str, str]]:
+        """The `event` and `exit` lines of an arc (kept, but for a barrier's, whose lines vary)."""
+        json = self.json
+        name, shown = json[event], json[target.name if target.__class__ is RState else target]
+        path = f"{self.head}{json[state.name]}]"
+        lines = (
+            f'{path}, "kind": "event", "event": {name}, "target": {shown}' + _END,
+            f'{path}, "kind": "exit", "event": {name}' + _END,
+        )
+        if state.do != "barrier":
+            self.arcs.setdefault(state, {})[event] = (target, lines)
+        return target, lines
 
 
 class TextRecords(Records):
+    """Keeps the lines of the tick's transitions; `flush` (at the end of every tick, before the clock
+    moves on) writes them with the tick's time, as does any other record written before them."""
+
     def __init__(self, sink: LineSink, clock: TraceClock) -> None:
         super().__init__(sink, clock)
         self.line = sink.write_line
+        self.sink_flush = sink.flush
         self.json = _Json()
-        self.enters: dict[RState, str] = {}  # a state's `"name"], "kind": "enter", "do": …`
-        self.arcs: dict[RState, dict[str, tuple[Any, str, str]]] = {}  # event -> target, the ends
-        self.agent: Agent | None = None  # whose head was made last, and in which tick
-        self.tick = -1
-        self.head = ""
+        self.tops: dict[Agent, Prefix] = {}
+        self.kept: list[str] = []  # lines of this tick, without their `{"t": …`
+        self.keep = self.kept.append
+        self.times = TickTimes(clock.dt)
+        self.heads: list[str] = []  # `{"t": …` of the ticks from `first` on (as many as were quick)
+        self.first = 0
         self.shown: tuple[int | None, int | None] = (None, None)  # the last deadlines made, as text:
-        self.shown_text = ""
+        self.shown_text = _END
         self.state_deadline: int | None = None  # the same, for a quick look
         self.deadline: int | None = None
 
-    def _head(self, agent: Agent) -> str:
-        """`{"t": …, "agent": …, "path": [` of `agent` in this tick."""
-        self.agent = agent
-        tick = self.tick = self.clock.tick
-        x = tick * self.clock.dt
-        if 1e-4 <= x < 1e6:  # seconds_text's quick way, without its call
-            t = f"{x:.9f}".rstrip("0")
-            t = t + "0" if t[-1] == "." else t
-        else:
-            t = seconds_text(tick, self.clock.dt)
-        self.head = f'{{"t": {t}, "agent": {self.json[agent.name]}, "path": ['
-        return self.head
+    def _head(self, tick: int) -> str:
+        """`{"t": …` of `tick`, with those of the next ticks: twice as many as last time when the
+        ticks come one after the other (64 at most), else one."""
+        heads, first = self.heads, self.first
+        count = min(2 * len(heads), 64) if heads and tick == first + len(heads) else 1
+        self.heads, self.first = self.times.heads(tick, count), tick
+        return self.heads[0]
 
-    def _prefix(self, frame: Frame) -> str:
-        """The JSON of the path of what runs `frame`, and ', ': made once a frame."""
+    def _write_kept(self) -> None:
+        """The lines kept, with the tick's time, to the sink."""
+        tick = self.clock.tick
+        at = tick - self.first
+        head = self.heads[at] if 0 <= at < len(self.heads) else self._head(tick)
+        self.line(head)
+        self.line(head.join(self.kept))
+        self.kept.clear()
+
+    def write(self, agent: Agent, path: list[str], kind: str, **extra: Any) -> None:
+        if self.kept:
+            self._write_kept()
+        super().write(agent, path, kind, **extra)
+
+    def put(self, record: dict[str, Any]) -> None:
+        if self.kept:
+            self._write_kept()
+        self.sink.write(record)
+
+    def flush(self) -> None:
+        kept = self.kept
+        if kept:  # _write_kept, without its call
+            tick = self.clock.tick
+            at = tick - self.first
+            head = self.heads[at] if 0 <= at < len(self.heads) else self._head(tick)
+            self.line(head)
+            self.line(head.join(kept))
+            kept.clear()
+        self.sink_flush()
+
+    def drain(self) -> None:
+        if self.kept:
+            self._write_kept()
+
+    def _prefix(self, frame: Frame) -> Prefix:
+        """The place `frame` runs in, found once a frame."""
         up = frame.up
-        json = self.json
         if up is None:
-            text = json[frame.agent.top] + ", "
+            prefix = self.tops.get(frame.agent) or self._top(frame.agent)
         elif isinstance(up, Frame):
-            text = f"{up.text or self._prefix(up)}{json[up.state.name]}, "
-        else:  # a region's: its owner's path and its name
+            outer: Prefix = up.text or self._prefix(up)
+            prefix = outer.below.get(up.state) or outer.inner(up.state, up.state.name)
+        else:  # a region's: its owner's path, the owner's state and the region's name
             owner = up.owner
-            text = f"{owner.text or self._prefix(owner)}{json[owner.state.name]}, {json[up.spec.name]}, "
-        frame.text = text
-        return text
+            outer = owner.text or self._prefix(owner)
+            at = outer.below.get(owner.state) or outer.inner(owner.state, owner.state.name)
+            prefix = at.below.get(up.spec) or at.inner(up.spec, up.spec.name)
+        frame.text = prefix
+        return prefix
 
-    def _enter_end(self, state: RState) -> str:
+    def _top(self, agent: Agent) -> Prefix:
         json = self.json
-        text = f'{json[state.name]}], "kind": "enter"' + (f', "do": {json[state.do]}' if state.do else "")
-        self.enters[state] = text
-        return text
+        top = self.tops[agent] = Prefix(f', "agent": {json[agent.name]}, "path": [{json[agent.top]}, ', json)
+        return top
 
     def _deadlines(self, frame: Frame) -> str:
-        """`, "deadline": …, "machine_deadline": …` (those set); the last one made is kept."""
+        """`, "deadline": …, "machine_deadline": …}\n` (those set); the last one made is kept."""
         shown = self.state_deadline, self.deadline = frame.state_deadline, frame.deadline
         if shown != self.shown:
             dt = self.clock.dt
             self.shown = shown
-            self.shown_text = "".join(
-                f', "{name}": {seconds_text(tick, dt)}'
-                for name, tick in zip(("deadline", "machine_deadline"), shown, strict=True)
-                if tick is not None
+            self.shown_text = (
+                "".join(
+                    f', "{name}": {seconds_text(tick, dt)}'
+                    for name, tick in zip(("deadline", "machine_deadline"), shown, strict=True)
+                    if tick is not None
+                )
+                + _END
             )
         return self.shown_text
-
-    def _arc_ends(self, state: RState, event: str, target: Any) -> tuple[Any, str, str]:
-        json = self.json
-        name, shown = json[event], json[target.name if target.__class__ is RState else target]
-        ends = self.arcs.setdefault(state, {})[event] = (
-            target,
-            f'{json[state.name]}], "kind": "event", "event": {name}, "target": {shown}}}\n',
-            f'{json[state.name]}], "kind": "exit", "event": {name}}}\n',
-        )
-        return ends
 
     def enter(self, frame: Frame, state: RState) -> None:
         if not frame.vars_shown:
             super().enter(frame, state)
             return
-        agent = frame.agent
-        head = self.head if agent is self.agent and self.tick == self.clock.tick else self._head(agent)
-        end = self.enters.get(state) or self._enter_end(state)
+        prefix: Prefix = frame.text or self._prefix(frame)
+        text = prefix.enters.get(state) or prefix.enter(state)
         if frame.deadline is None and frame.state_deadline is None:
-            self.line(f"{head}{frame.text or self._prefix(frame)}{end}}}\n")
-            return
-        if frame.deadline == self.deadline and frame.state_deadline == self.state_deadline:
-            deadlines = self.shown_text
+            self.keep(text[1])
+        elif frame.deadline == self.deadline and frame.state_deadline == self.state_deadline:
+            self.keep(text[0] + self.shown_text)
         else:
-            deadlines = self._deadlines(frame)
-        self.line(f"{head}{frame.text or self._prefix(frame)}{end}{deadlines}}}\n")
+            self.keep(text[0] + self._deadlines(frame))
 
     def arc(self, frame: Frame, state: RState, event: Event, target: RState | str | None) -> None:
+        ends = (frame.text or self._prefix(frame)).arcs.get(state, _NONE).get(event.name)
+        if ends is not None and ends[0] is target and frame.vars_shown:
+            self.kept += ends[1]
+        else:
+            self._arc(frame, state, event, target)
+
+    def _arc(self, frame: Frame, state: RState, event: Event, target: RState | str | None) -> None:
+        """An arc not taken before from this place and state to this target, a barrier's (whose
+        records say who arrived), or one taken after the vars changed."""
         if not frame.vars_shown or (state.do == "barrier" and event.outputs):
             super().arc(frame, state, event, target)
             return
-        agent = frame.agent
-        head = self.head if agent is self.agent and self.tick == self.clock.tick else self._head(agent)
-        ends = self.arcs.get(state, _NONE).get(event.name)
-        if ends is None or ends[0] is not target:
-            ends = self._arc_ends(state, event.name, target)
-        path = f"{head}{frame.text or self._prefix(frame)}"
-        self.line(f"{path}{ends[1]}{path}{ends[2]}")
+        ends = frame.text.arc(state, event.name, target)
+        self.kept += ends[1]
 
 
-_NONE: dict[str, tuple[Any, str, str]] = {}
+_END = "}\n"
+_NONE: dict[str, tuple[Any, tuple[str, str]]] = {}
 
 
 def records_for(sink: TraceSink | None, clock: TraceClock) -> Records | None:

@@ -10,7 +10,7 @@ from typing import Any
 from hfsm.runtime.agent import Agent, AgentResult, BehaviourStats, Frame
 from hfsm.runtime.engine import Engine, FatalError
 from hfsm.runtime.failing import Failure, Failures, all_failed
-from hfsm.runtime.program import Program, span_ticks
+from hfsm.runtime.program import Program, RMachine, span_ticks
 from hfsm.trace import TraceSink
 from hfsm.world import World
 
@@ -45,10 +45,14 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
     for agent in agents:
         agent.robot = world.handle(agent.name)
     engine = Engine(agents, world, program.dt, trace)
-    error, tb = _loop(engine, program, options, world)
-    if error:
-        _stop_all(engine, agents)
-    elif all_failed(agents):
+    try:
+        error, tb = _loop(engine, program, options, world)
+        if error:
+            _stop_all(engine, agents)
+    finally:
+        if engine.records is not None:
+            engine.records.drain()
+    if not error and all_failed(agents):
         error = "every agent failed"
     results = {a.name: a.result or AgentResult(None, {}, engine.time) for a in agents}
     return RunResult(results, engine.time, error, tb, {a.name: a.stats for a in agents})
@@ -62,10 +66,7 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
     world_records = getattr(world, "trace_records", None)  # a world may add records (robots' poses)
     try:
         failures.apply(0)
-        for agent in agents:
-            if agent.result is None:
-                agent.entries = 0
-                engine.start(agent, top, options.agent_params.get(agent.name, options.params))
+        _start(engine, top, options)
         while engine.running:
             following = _next_tick(engine, failures) if world.static else engine.tick + 1
             if following is None or following > last:
@@ -83,11 +84,22 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
                 if agent.result is None:
                     agent.entries = 0
                     engine.step(agent.root)  # type: ignore[arg-type]
-            if engine.trace is not None:
-                engine.trace.flush()
+            if engine.records is not None:
+                engine.records.flush()
     except FatalError as exc:
         return exc.args[0], exc.traceback
     return None, ""
+
+
+def _start(engine: Engine, top: RMachine, options: RunOptions) -> None:
+    """Every agent not failed at 0 s starts its top machine (tick 0, whose records the sink gets with
+    the next tick's)."""
+    for agent in engine.agents:
+        if agent.result is None:
+            agent.entries = 0
+            engine.start(agent, top, options.agent_params.get(agent.name, options.params))
+    if engine.records is not None:
+        engine.records.drain()
 
 
 def _stopped(engine: Engine, following: int | None, last: int, max_time: float) -> str:
@@ -102,9 +114,9 @@ WorldRecords = Callable[[int], list[dict[str, Any]]]
 
 
 def _world_records(engine: Engine, records: WorldRecords | None, tick: int) -> None:
-    if records is not None and engine.trace is not None:
+    if records is not None and engine.records is not None:
         for record in records(tick):
-            engine.trace.write(record)
+            engine.records.put(record)
 
 
 def _next_tick(engine: Engine, failures: Failures) -> int | None:

@@ -96,6 +96,25 @@ def test_choose_carry_direction_picks_the_nearer_wall(tmp_path: Path) -> None:
     assert near_minus_x.outputs("r2") == {"direction": "right"}
 
 
+def test_choose_carry_direction_passes_over_a_wall_behind(tmp_path: Path) -> None:
+    """Issue 10 (a room of many tables): a wall close behind the robot, running along the carry,
+    shows when it looks right and back; the table's end can never meet it, so the wall it can
+    meet (left, the nearer end wall) is chosen."""
+    top = machine_file(tmp_path, """
+        vars: {direction: "", distance: 0.0}
+        outcomes: [chosen, failure, timeout]
+        outputs: {direction: "${vars.direction}", distance: "${vars.distance}"}
+        timer: 30
+        states:
+          call: {do: choose_carry_direction, save: {direction: direction, distance: distance},
+                 on: {chosen: chosen, failure: failure}}
+    """)
+    scene = {**at_table(r2=None, table_x=-0.9), "room": {"width": 5.0, "depth": 2.2}}  # wall 0.76 m behind
+    chosen = run_in_scene(top, scene).outputs()
+    assert chosen["direction"] == "left", "before: right, the wall behind taken for one 1.04 m away"
+    assert chosen["distance"] == pytest.approx(1.6, abs=0.25), "the west wall, 1.6 m to the left"
+
+
 def test_choose_carry_direction_toward_a_point(tmp_path: Path) -> None:
     """Issue 10: with `toward` (own start frame: r1 starts facing +y, so x is its right) the side
     of that point wins over the nearer wall, for a team that claimed a wall."""

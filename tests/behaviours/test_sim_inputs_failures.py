@@ -135,8 +135,8 @@ def test_scenario_failures_are_checked_at_their_positions(
     scene.write_text(SCENE + "failures:\n  - {robot: r3, at: 5}\n")
     code, _, err = hfsm_run(capsys, machine("sense", SENSE), "--world", "sim", "--scenario", scene)
     assert code == 2
-    assert "scene.yaml:9:3: error[E200]: 'failures': [0] names no robot of the scenario (r1, r2)" in err
+    assert "scene.yaml:9:13: error[E200]: no robot named 'r3' in the scenario (robots: r1, r2)" in err
     scene.write_text(SCENE + "failures:\n  - {robot: r2, at: -5, why: x}\n")
     code, _, err = hfsm_run(capsys, machine("sense", SENSE), "--world", "sim", "--scenario", scene)
-    assert "scene.yaml:9:21: error[E200]: 'at': Input should be greater than or equal to 0" in err
+    assert "scene.yaml:9:21: error[E200]: 'at' must be >= 0, not -5 (seconds into the run)" in err
     assert "scene.yaml:9:25: error[E200]: unknown key 'why'" in err

@@ -71,7 +71,10 @@ def test_team_scenario_errors_are_at_their_positions(
     )
     code, _, err = hfsm_run(capsys, machine("pause", PAUSE), "--world", "sim", "--scenario", scene)
     assert code == 2
-    assert "scene.yaml:2:26: error[E200]: 'difficulty': Input should be less than 1" in err
+    assert (
+        "scene.yaml:2:26: error[E200]: 'difficulty' must be > 0 and < 1, not 1.5 "
+        "(TARARC's d_t, in the open interval (0, 1))"
+    ) in err
     assert "scene.yaml:4:30: error[E200]: unknown key 'priorty'; did you mean 'priority'?" in err
     assert "scene.yaml:6:30: error[E200]: 'body': input should be 'full' or 'light', not 'wheels'" in err
     assert "scene.yaml:8:31: error[E200]: unknown key 'why' (allowed: rate, reason, robots)" in err

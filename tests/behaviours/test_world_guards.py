@@ -69,3 +69,46 @@ def test_a_written_video_and_picture_close_quietly(tmp_path: Path) -> None:
         recorder._write(np.zeros((48, 48, 3), np.uint8))
     recorder.close()
     assert (tmp_path / "v.mp4").stat().st_size > 0 and (tmp_path / "v.png").stat().st_size > 0
+
+
+def test_a_scenarios_numbers_out_of_range_are_exit_2_with_value_and_range_all_at_once(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    scenario = tmp_path / "room.yaml"
+    scenario.write_text(
+        "robots:\n  r1: {x: 1, y: 1, speed: 0}\n  r2: {x: -1, y: -1, speed: 4}\n"
+        "jitter: {position: -1}\nroom: {width: 60}\nbattery: {idle: 1.5}\n"
+    )
+    code = main([str(ROOT / "machines" / "move_furniture.yaml"), "--scenario", str(scenario), "--no-video"])
+    err = capsys.readouterr().err
+    assert code == 2 and "Traceback" not in err
+    assert [line.split("room.yaml:")[1] for line in err.splitlines() if "room.yaml:" in line] == [
+        "2:27: error[E200]: 'speed' must be > 0 and <= 3, not 0 (top speed, m/s (default: the body's))",
+        "3:29: error[E200]: 'speed' must be > 0 and <= 3, not 4 (top speed, m/s (default: the body's))",
+        "4:20: error[E200]: 'position' must be >= 0 and <= 1, not -1 (max offset per axis, metres)",
+        "5:15: error[E200]: 'width' must be > 1.5 and <= 50, not 60 (extent along x, metres)",
+        "6:17: error[E200]: 'idle' must be >= 0 and <= 1, not 1.5 (charge spent per second)",
+    ]
+
+
+def test_a_scenarios_room_checks_are_exit_2_at_each_value_all_at_once(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    scenario = tmp_path / "room.yaml"
+    scenario.write_text(
+        "table: {x: 9}\ntargets:\n  - {id: table1, x: 7, y: 0}\n"
+        "robots:\n  r1: {x: 2.4, y: 0}\n  r2: {x: 0, y: -9}\njitter: {position: 0.1}\n"
+    )
+    code = main([str(ROOT / "machines" / "move_furniture.yaml"), "--scenario", str(scenario), "--no-video"])
+    err = capsys.readouterr().err
+    assert code == 2 and "Traceback" not in err
+    assert [line.split("room.yaml:")[1] for line in err.splitlines() if "room.yaml:" in line] == [
+        "1:12: error[E200]: 'x' must be from -2.1 to 2.1 for the table (0.8 x 0.5 m, yaw 0) to fit inside "
+        "the room (5 x 5 m), not 9",
+        "3:10: error[E200]: task id 'table1' is used before: ids must be unique across tables and targets",
+        "3:21: error[E200]: 'x' must be from -2.5 to 2.5 inside the room (5 x 5 m), not 7",
+        "5:11: error[E200]: 'x' must be from -2.2 to 2.2 for the robot to start inside the room (5 x 5 m) "
+        "0.2 m from its walls, with 0.1 m of jitter, not 2.4",
+        "6:17: error[E200]: 'y' must be from -2.2 to 2.2 for the robot to start inside the room (5 x 5 m) "
+        "0.2 m from its walls, with 0.1 m of jitter, not -9",
+    ]

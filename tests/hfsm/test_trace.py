@@ -40,12 +40,27 @@ def test_the_bytes_are_json_dumps_lines(tmp_path_factory: pytest.TempPathFactory
 def test_lines_reach_the_file_whole_and_at_the_latest_when_due(tmp_path: Path) -> None:
     path = tmp_path / "t.jsonl"
     trace = JsonlTrace(path)
+    trace.SAVE_SECONDS = 0.0  # due at once: the clock is read, and the lines saved, every tick
     trace.write({"t": 0.0, "agent": "a", "path": ["m"], "kind": "enter", "when": Path("x")})
     trace.flush()
+    assert read_jsonl(path)[0]["when"] == "x"
+    for tick in range(1, 100):
+        trace.write({"t": tick * 0.05, "agent": "a", "path": ["m"], "kind": "exit", "outcome": f"{tick}"})
+        trace.flush()
+        assert read_jsonl(path)[-1]["outcome"] == f"{tick}"
+    trace.close()
+
+
+def test_after_quick_ticks_the_lines_are_saved_within_a_few_ticks_when_due(tmp_path: Path) -> None:
+    path = tmp_path / "t.jsonl"
+    trace = JsonlTrace(path)
+    for _ in range(1000):  # quick ticks: the clock is read every few of them, LOOK_MOST at most
+        trace.write_line("{}\n")
+        trace.flush()
     trace.SAVE_SECONDS = 0.0
-    trace.write({"t": 0.05, "agent": "a", "path": ["m"], "kind": "exit", "outcome": "done"})
-    trace.flush()
-    assert read_jsonl(path)[-1]["outcome"] == "done" and read_jsonl(path)[0]["when"] == "x"
+    for _ in range(trace.LOOK_MOST):
+        trace.flush()
+    assert path.read_text(encoding="utf-8") == "{}\n" * 1000
     trace.close()
 
 

@@ -11,10 +11,10 @@ ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
 from sim.scenario import scenario_from_dict  # noqa: E402
-from tools.sweep import run_sweep  # noqa: E402
+from tools.sweep import Shard, SweepError, run_sweep  # noqa: E402
 from tools.tararc.experiments import Config, help_trials, main_trials  # noqa: E402
 from tools.tararc.measure import Timeline, measure  # noqa: E402
-from tools.tararc.report import growth, median, write  # noqa: E402
+from tools.tararc.report import growth, median, timed, write  # noqa: E402
 from tools.tararc.scenes import scene  # noqa: E402
 from tools.tararc.trials import BenchTrial, run_bench_trial  # noqa: E402
 
@@ -104,3 +104,33 @@ def test_the_report_from_results(tmp_path: Path) -> None:
     assert "| agent | 1 | 1/1 | 5.0 |" in text and "| member | 1 | 1/1 | 6.0 |" in text
     assert sorted(p.name for p in (tmp_path / "figures").iterdir()) == [
         "fig5_density.png", "fig6_size.png", "fig7_speed.png", "fig8_ability.png"]
+
+
+@pytest.mark.slow
+def test_shards_merged_give_the_results_of_one_run(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    import tools.tararc_bench as bench
+
+    tiny = [BenchTrial("tiny", s, s, scene(robots=4, tasks=2), max_time=15.0) for s in (1, 2, 3)]
+    monkeypatch.setattr(bench, "main_trials", lambda _config: tiny)
+    config = Config(help_seeds=0)
+    whole = bench.first_stage(config, workers=1)
+    for i in (1, 2):
+        assert bench.first_stage(config, workers=1, shard=Shard(i, 2), shards=tmp_path) is None
+    merged = bench.first_stage(config, shards=tmp_path, merge=True)
+    assert whole is not None and merged is not None
+
+    def timeless(results: list[dict[str, Any]]) -> list[dict[str, Any]]:
+        return [{k: v for k, v in r.items() if k != "wall"} for r in results]
+
+    assert timeless(merged) == timeless(whole) and [r["trial"] for r in merged] == [0, 1, 2]
+    assert timeless(bench.run_bench(config, workers=1, first=merged)) == timeless(whole)
+    with pytest.raises(SweepError, match="no shards"):
+        bench.first_stage(config, shards=tmp_path / "none", merge=True)
+
+
+def test_the_time_to_group_counts_runs_that_grouped_but_missed_a_task() -> None:
+    rs = [{"completed": False, "grouped": 20.0, "converge": math.inf},
+          {"completed": True, "grouped": 10.0, "converge": 5.0},
+          {"completed": False, "grouped": math.inf, "converge": math.inf}]
+    assert timed(rs, "grouped") == [20.0, 10.0]
+    assert timed(rs, "converge") == [5.0]

@@ -146,22 +146,22 @@ def test_no_crash_on_random_images(seed: int, shape: tuple[int, int]) -> None:
     assert blob_from_mask(np.zeros(shape, bool)) == NO_BLOB
 
 
-@pytest.mark.parametrize("in_view", [["r2", "r3", "r4", "r5"], ["r6", "r7", "r8", "r9"]])
-def test_nine_robot_colours_are_told_apart(scene: SceneFactory, in_view: list[str]) -> None:
-    """Issue 10: rooms of several pairs need more than five colours; each of nine robots is found
+@pytest.mark.parametrize("in_view", [["r2", "r3", "r4", "r5"], ["r6", "r7", "r8", "r9", "r10"]])
+def test_ten_robot_colours_are_told_apart(scene: SceneFactory, in_view: list[str]) -> None:
+    """Issue 10: rooms of several pairs need more than five colours; each of ten robots is found
     by its own colour alone, where it stands, and no colour of a robot out of view is found."""
-    names = [f"r{i}" for i in range(2, 10)]
+    names = [f"r{i}" for i in range(2, 11)]
     robots = {"r1": {"x": -2.0, "y": 0.0, "yaw": 0.0}}
     for i, name in enumerate(names):
         if name in in_view:
             k = in_view.index(name)
-            robots[name] = {"x": 0.5, "y": 1.2 - 0.8 * k, "yaw": 180.0}
+            robots[name] = {"x": 1.5, "y": 1.6 - 0.8 * k, "yaw": 180.0}
         else:
-            robots[name] = {"x": -3.0 - 0.6 * (i % 2), "y": 3.0 - 2.0 * (i // 2), "yaw": 0.0}
+            robots[name] = {"x": -2.7 - 0.4 * (i % 3), "y": 3.0 - 2.0 * (i // 3), "yaw": 0.0}
     s = scene(robots, size=(640, 480), table={"x": 3.0, "y": 3.0})
     image = s.image()
     blobs = find_robots(image)
-    assert len(blobs) >= 9
+    assert len(blobs) >= 10
     for i, name in enumerate(["r1", *names]):
         blob = blobs[i]
         if name not in in_view:
