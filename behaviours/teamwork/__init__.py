@@ -9,7 +9,7 @@ from __future__ import annotations
 from behaviours.teamwork.memory import tararc_recall, tararc_remember
 from behaviours.teamwork.plans import tararc_allocate, tararc_help
 from behaviours.teamwork.radio import partner_silent, tararc_gather, tararc_watch
-from behaviours.teamwork.room import room_allocate, room_assign, room_locate, room_watch
+from behaviours.teamwork.room import room_allocate, room_assign, room_locate, room_relocalise, room_watch
 from hfsm.primitive import Primitive
 
 PRIMITIVES: tuple[Primitive, ...] = (
@@ -23,5 +23,6 @@ PRIMITIVES: tuple[Primitive, ...] = (
     room_allocate,
     room_assign,
     room_locate,
+    room_relocalise,
     room_watch,
 )

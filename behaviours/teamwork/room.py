@@ -6,9 +6,10 @@ Pure of any world: they hear, say and compute with `behaviours.room`, so they ru
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
-from behaviours.room.frames import ahead, to_local, to_room
+from behaviours.room.frames import ahead, at_wall, relocalise, to_local, to_room
 from behaviours.room.plan import job_of, make_room_plan
 from behaviours.teamwork.plans import coefficients_from
 from hfsm.primitive import Context, Outcome, primitive
@@ -92,3 +93,26 @@ def room_watch(ctx: Context, *, team: list[Any], lost: list[Any], done: list[Any
     ctx.wait_until(news)
     return Outcome("changed", lost=sorted(known_lost), done=sorted(known_done),
                    seen=dict(sorted(known_seen.items())), spent=sorted(known_spent))
+
+
+@primitive(outcomes=["relocalised", "kept"], outputs=["start"])
+def room_relocalise(ctx: Context, *, start: dict[str, Any], pose: dict[str, Any], seen: list[Any] | None,
+                    table: dict[str, Any], near: float = 1.2, shift: float = 1.0, turn: float = 20.0
+                    ) -> Outcome:
+    """After its table reached its wall, where the robot started, corrected by that table: its place
+    there is known (its claimed way, `at_wall`) and the robot sees it (`seen`: in.tables_in_view,
+    own frame). The table seen nearest the robot within `near` m counts; a correction larger than
+    `shift` m or `turn` degrees is not believed (another table, a bad view): `kept`."""
+    here = (float(pose["x"]), float(pose["y"]))
+    views = [v for v in seen or [] if not v.get("clipped")] or list(seen or [])
+    if not views:
+        return Outcome("kept", start=start)
+    view = min(views, key=lambda v: math.dist(here, (float(v["x"]), float(v["y"]))))
+    if math.dist(here, (float(view["x"]), float(view["y"]))) > near:
+        return Outcome("kept", start=start)
+    new = relocalise(start, [view["x"], view["y"]], float(view["heading"]), at_wall(table),
+                     float(table.get("yaw", 0)))
+    moved = math.dist((new["x"], new["y"]), (float(start["x"]), float(start["y"])))
+    if moved > shift or abs(new["yaw"] - float(start["yaw"])) > turn:
+        return Outcome("kept", start=start)
+    return Outcome("relocalised", start=new)

@@ -59,3 +59,15 @@ def test_a_robot_failing_mid_carry_is_replaced_and_its_table_taken_up_again(
 def test_a_lossy_radio_delays_but_does_not_stop_the_team(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     result = clear("room_2_tables", tmp_path, capsys, "--radio-loss", "0.3")
     assert_cleared(result, set())
+
+
+@pytest.mark.slow
+def test_a_robot_failing_mid_carry_at_the_table_its_survivor_slides_the_table_to_the_wall(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """r2 fails at 80 s in the carry and stands at the middle of the table's long side, where a new
+    partner would have to stand: r1, its partner silent, slides the table along its long axis to
+    the claimed wall alone (drag_table), away from r2, touching no robot."""
+    result = clear("room_2_tables_carry_fail", tmp_path, capsys)
+    assert_cleared(result, {"r2"})
+    carries = result["agents"]["r1"]["outputs"]["carries"]
+    assert carries[0] == {"table": "table1", "role": "leader", "partner": "r2", "outcome": "at_wall"}

@@ -5,11 +5,12 @@ from __future__ import annotations
 import itertools
 import math
 
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
 from behaviours.room.claims import Rect, claim_walls, overlap
-from behaviours.room.frames import difficulty_of, to_local, to_room
+from behaviours.room.frames import at_wall, difficulty_of, relocalise, to_local, to_room
 from behaviours.room.plan import groups_after, job_of, make_room_plan, tables_of
 
 ROOM = {"width": 7.0, "depth": 5.0}
@@ -106,3 +107,22 @@ def test_a_pair_tries_again_on_a_new_channel_once_both_gave_up() -> None:
     assert again["channel"] == "table1_r1_r2_1_"
     third = job_of(plan, "r2", [], [], {}, [f"{first}/r1", f"{first}/r2", "table1_r1_r2_1_/r1", "table1_r1_r2_1_/r2"])
     assert third["channel"] == "table1_r1_r2_2_"
+
+
+@given(st.floats(-3, 3), st.floats(-3, 3), st.floats(-170, 170), st.floats(-0.3, 0.3), st.floats(-0.3, 0.3),
+       st.floats(-15, 15), st.sampled_from([0.0, 90.0, 30.0]))
+def test_a_table_seen_where_it_is_known_to_stand_corrects_the_start(
+        x: float, y: float, yaw: float, dx: float, dy: float, dyaw: float, table_yaw: float) -> None:
+    truth = {"x": x, "y": y, "yaw": yaw}
+    told = {"x": x + dx, "y": y + dy, "yaw": yaw + dyaw}
+    known = [1.0, 2.0]
+    seen = to_local(truth, known)
+    heading = (table_yaw - yaw + 90.0) % 180.0 - 90.0 + 180.0  # the long axis either way round
+    fixed = relocalise(told, seen, heading, known, table_yaw)
+    assert math.dist((fixed["x"], fixed["y"]), (x, y)) < 1e-4
+    assert abs((fixed["yaw"] - yaw + 180.0) % 360.0 - 180.0) < 1e-4
+
+
+def test_a_table_at_its_wall_stands_on_its_way_a_little_off_the_wall() -> None:
+    table = {"x": -1.6, "y": 0.3, "length": 0.8, "toward": [-3.5, 0.3]}
+    assert at_wall(table) == pytest.approx([-3.05, 0.3])
