@@ -16,7 +16,7 @@ from sim.scenario import scenario_from_dict  # noqa: E402
 from tools.room.experiments import QUICK, Config, trials  # noqa: E402
 from tools.room.report import write  # noqa: E402
 from tools.room.scenes import PAIR_GAP, REACH, room  # noqa: E402
-from tools.room.trials import RoomLine, cleared_at, phase, run_room_trial  # noqa: E402
+from tools.room.trials import RoomLine, cleared_at, measure, phase, run_room_trial  # noqa: E402
 from tools.sweep import run_sweep  # noqa: E402
 
 
@@ -117,3 +117,23 @@ def test_results_are_the_same_on_one_and_two_workers() -> None:
         {k: v for k, v in r.items() if k != "wall"} for r in two]
     assert [(r["k"], r["n"]) for r in one] == [(3, 6), (2, 4)]
     assert all(r["collisions"] == 0 and not r["cleared"] for r in one)
+
+
+def test_a_table_falling_from_a_robot_failing_mid_carry_is_the_failures_not_the_teams() -> None:
+    line = RoomLine()
+    for record in (
+        _event(1.0, "r1", "assign", job={"role": "leader"}),
+        {"t": 20.0, "agent": "r1", "path": ["clear_room", "work", "carry", "lift", "lift"], "kind": "enter",
+         "do": "lift_table"},
+        {"t": 30.0, "agent": "r1", "path": ["clear_room"], "kind": "failed"},
+    ):
+        line.write(record)
+    at_walls = {"table_wall_distances": [0.01, 0.02], "table_wall_distance": 0.02, "robot_collisions": 0}
+    scenario = {"tables": [{"id": "table1"}, {"id": "table2"}], "failures": [{"robot": "r1", "at": 30.0}]}
+    dropped = measure(line, {**at_walls, "dropped": True}, scenario, {}, 200.0, None)
+    assert dropped["cleared"] and dropped["dropped_by_failure"] and dropped["failure"]["phase"] == "mid-carry"
+    before_lift = {**scenario, "failures": [{"robot": "r1", "at": 10.0}]}
+    line.failed["r1"] = 10.0
+    assert not measure(line, {**at_walls, "dropped": True}, before_lift, {}, 200.0, None)["cleared"]
+    assert not measure(line, {**at_walls, "dropped": True}, {"tables": scenario["tables"]}, {}, 200.0,
+                       None)["cleared"]

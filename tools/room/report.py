@@ -66,7 +66,8 @@ def _story(r: Result) -> str:
         more = f" (+{len(carries) - 6} more)" if len(carries) > 6 else ""
         parts.append("carries: " + "; ".join(carries[:6]) + more)
     if r["dropped"]:
-        parts.append("a table dropped")
+        parts.append("a table fell from a robot failing mid-carry" if r.get("dropped_by_failure")
+                     else "a table dropped")
     if r["error"] and "max-time" in r["error"]:
         parts.append(f"stopped at {r['time']:.0f} s")
     return ", ".join(parts)
@@ -79,7 +80,11 @@ def _row(r: Result) -> str:
     yes = {True: "yes", False: "no"}
     return (f"| {r['trial']} | {r['experiment']} | {r['seed']} | {r['room'][0]} x {r['room'][1]} | "
             f"{r['k']} | {r['n']} | {r['loss']:.1f} | {fail} | {yes[r['cleared']]} | {_s(r['clear_time'])} | "
-            f"{gap:.2f} | {yes[r['dropped']]} | {r['collisions']} | {r['wall']:.0f} |")
+            f"{gap:.2f} | {_dropped(r)} | {r['collisions']} | {r['wall']:.0f} |")
+
+
+def _dropped(r: Result) -> str:
+    return "by the failure" if r.get("dropped_by_failure") else ("yes" if r["dropped"] else "no")
 
 
 def lines_for(results: list[Result], command: str, wall: float, workers: int, load: str) -> list[str]:
@@ -99,8 +104,9 @@ def lines_for(results: list[Result], command: str, wall: float, workers: int, lo
         "Rooms are drawn from the seed (tools/room/scenes.py: size, tables of 0.7-1.0 x 0.45-0.55 m at "
         "headings 0/90/180/270, a pair beside each table, the other robots free, claimed walls that cross "
         "nothing); the outcome is read off the scorer (every table within 0.15 m of a wall, none "
-        "dropped, robot-robot contacts) and the trace (when the last table reached its wall, the "
-        "carries, the failure).",
+        "dropped except by a robot failing mid-carry, which lets its load fall as the issue's failure "
+        "model says; robot-robot contacts counted apart) and the trace (when the last table reached "
+        "its wall, the carries, the failure).",
         "",
         f"- **Target rooms** (3 tables, 6-8 robots, one robot failing at a random time in 5-150 s, "
         f"lossless): **{len(ok)} of {len(target)} cleared** within {within} "

@@ -95,18 +95,22 @@ def measure(line: RoomLine, result_score: dict[str, Any], scenario: dict[str, An
     tables = [str(t["id"]) for t in scenario["tables"]]
     distances = result_score.get("table_wall_distances") or [result_score["table_wall_distance"]]
     at_walls = all(d is not None and d <= 0.15 for d in distances)
-    cleared = at_walls and not result_score["dropped"]
+    planned = scenario.get("failures", [])
+    failed_phase = phase(line, planned[0]["robot"], planned[0]["at"]) if planned else ""
+    # The failure model: a robot failing mid-carry drops what it holds. That fall is the
+    # failure's, not the team's; any other drop (a pair losing its table) still fails the room.
+    dropped_by_failure = bool(result_score["dropped"]) and failed_phase == "mid-carry"
+    cleared = at_walls and (not result_score["dropped"] or dropped_by_failure)
     out: dict[str, Any] = {
         "cleared": cleared, "clear_time": cleared_at(line.carries, tables) if cleared else None,
         "time": time, "error": error, "distances": distances, "dropped": result_score["dropped"],
-        "collisions": result_score["robot_collisions"],
+        "dropped_by_failure": dropped_by_failure, "collisions": result_score["robot_collisions"],
         "outcomes": outcomes, "carries": [dict(c) for c in line.carries],
         "failed": line.failed,
     }
-    planned = scenario.get("failures", [])
     if planned:
         f = planned[0]
-        out["failure"] = {"robot": f["robot"], "at": f["at"], "phase": phase(line, f["robot"], f["at"]),
+        out["failure"] = {"robot": f["robot"], "at": f["at"], "phase": failed_phase,
                           "recovered": cleared}
     if not cleared:
         out["endings"] = {a: dict(sorted(c.items())) for a, c in sorted(line.endings.items())}
