@@ -115,7 +115,7 @@ def lines_for(results: list[Result], command: str, wall: float, workers: int, lo
         f"{sum(1 for r in results if r['collisions'])} of {len(results)}.",
         f"- Wall time of one target room: median {_s(_median(walls))} s, "
         f"max {_s(max(walls, default=None))} s "
-        f"(two rooms running at once on the loaded machine; target < {WALL_TARGET:.0f} s on 2 cores).",
+        f"({workers} rooms running at once on the 2 cores; target < {WALL_TARGET:.0f} s on 2 cores).",
     ]
     phases: dict[str, list[bool]] = {}
     for r in results:
