@@ -22,7 +22,7 @@ sys.path.insert(0, str(ROOT))
 from behaviours.trial import TrialSpec, run_trial_dict  # noqa: E402
 from tools.paper.reference import SCENARIOS  # noqa: E402
 from tools.paper.report import write_report  # noqa: E402
-from tools.sweep import Shard, SweepError, merge_shards, run_sweep, shard_path, write_shard  # noqa: E402
+from tools.sweep import Shard, SweepError, add_executor_args, merge_shards, run_sweep, shard_path, write_shard  # noqa: E402
 
 ABLATIONS = {"no_wait": {"waits": False}, "margin_5": {"margin": 0.05}}
 
@@ -35,8 +35,7 @@ def run_all(specs: list[TrialSpec], args: argparse.Namespace, label: str) -> lis
 
 def add_sweep_args(p: argparse.ArgumentParser) -> None:
     """The options every campaign of tools/ shares: where trials run, and shards for batch queues."""
-    p.add_argument("--workers", type=int, default=2, help="local processes (with --executor local)")
-    p.add_argument("--executor", default="local", help="local, or dask://HOST:PORT for a Dask cluster")
+    add_executor_args(p)
     p.add_argument("--shard", type=Shard.parse, help="run only shard I of N (I/N) and write it to --shards")
     p.add_argument("--merge", action="store_true", help="write the report from the shards in --shards")
     p.add_argument("--shards", type=Path, default=ROOT / "out" / "shards", help="folder of shard files")

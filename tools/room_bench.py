@@ -30,7 +30,7 @@ sys.path.insert(0, str(ROOT))
 from tools.room.experiments import QUICK, Config, trials  # noqa: E402
 from tools.room.report import write  # noqa: E402
 from tools.room.trials import run_room_trial  # noqa: E402
-from tools.sweep import SweepError, run_sweep  # noqa: E402
+from tools.sweep import SweepError, add_executor_args, run_sweep  # noqa: E402
 
 
 def run_bench(config: Config, executor: str = "local", workers: int = 2) -> list[dict[str, Any]]:
@@ -61,8 +61,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--loss-rooms", type=int, help="rooms at 30 %% radio loss (default 2)")
     p.add_argument("--max-time", type=float, help="simulated seconds per room at most (default 2100)")
     p.add_argument("--first-seed", type=int, default=1)
-    p.add_argument("--workers", type=int, default=2, help="local processes (with --executor local)")
-    p.add_argument("--executor", default="local", help="local, or dask://HOST:PORT for a Dask cluster")
+    add_executor_args(p)
     p.add_argument("--doc", type=Path, default=ROOT / "docs" / "ROOM.md")
     p.add_argument("--figures", type=Path, default=ROOT / "docs" / "figures" / "room")
     p.add_argument("--raw", type=Path, default=ROOT / "docs" / "results" / "room.json")

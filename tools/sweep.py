@@ -15,6 +15,7 @@ or repeats a trial. The Dask executor is an optional extra: `pip install 'hfsm[d
 
 from __future__ import annotations
 
+import argparse
 import json
 import multiprocessing
 import sys
@@ -53,6 +54,13 @@ class Shard:
 
     def picks(self, trial: int) -> bool:
         return trial % self.count == self.index - 1
+
+
+
+def add_executor_args(parser: argparse.ArgumentParser) -> None:
+    """The options every sweep shares: where its trials run."""
+    parser.add_argument("--workers", type=int, default=2, help="local processes (with --executor local)")
+    parser.add_argument("--executor", default="local", help="local, or dask://HOST:PORT for a Dask cluster")
 
 
 def run_sweep(

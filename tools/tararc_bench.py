@@ -30,7 +30,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from tools.docsection import write_section  # noqa: E402
-from tools.sweep import Shard, SweepError, merge_shards, run_sweep, shard_path, write_shard  # noqa: E402
+from tools.sweep import Shard, SweepError, add_executor_args, merge_shards, run_sweep, shard_path, write_shard  # noqa: E402
 from tools.tararc.experiments import QUICK, Config, help_trials, main_trials  # noqa: E402
 from tools.tararc.report import write  # noqa: E402
 from tools.tararc.trials import BenchTrial, run_bench_trial  # noqa: E402
@@ -71,8 +71,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--seeds", type=int, help="seeds per point of Table 1 and Figures 5 and 7")
     p.add_argument("--sizes", help="team sizes of Figure 6, comma-separated (default 10,20,30,40,50)")
     p.add_argument("--first-seed", type=int, default=1)
-    p.add_argument("--workers", type=int, default=2, help="local processes (with --executor local)")
-    p.add_argument("--executor", default="local", help="local, or dask://HOST:PORT for a Dask cluster")
+    add_executor_args(p)
     p.add_argument("--doc", type=Path, default=ROOT / "docs" / "TARARC.md")
     p.add_argument("--figures", type=Path, default=ROOT / "docs" / "figures" / "tararc")
     p.add_argument("--raw", type=Path, default=ROOT / "docs" / "results" / "tararc.json")
