@@ -87,7 +87,9 @@ class Scenario(Strict):
     @classmethod
     def _known_robots(cls, failures: list[FailureAt | FailureRate], info: ValidationInfo
                       ) -> list[FailureAt | FailureRate]:
-        robots = info.data.get("robots") or {}
+        if "robots" not in info.data:
+            return failures  # the robots are refused themselves: which names exist is not known
+        robots = info.data["robots"]
         refusals: list[Refusal] = []
         for i, failure in enumerate(failures):
             named = [(("robot",), failure.robot)] if isinstance(failure, FailureAt) else [

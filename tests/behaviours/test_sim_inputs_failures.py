@@ -140,3 +140,7 @@ def test_scenario_failures_are_checked_at_their_positions(
     code, _, err = hfsm_run(capsys, machine("sense", SENSE), "--world", "sim", "--scenario", scene)
     assert "scene.yaml:9:21: error[E200]: 'at' must be >= 0, not -5 (seconds into the run)" in err
     assert "scene.yaml:9:25: error[E200]: unknown key 'why'" in err
+    scene.write_text(SCENE.replace("yaw: -90}", "yaw: -90, body: ful}") + "failures:\n  - {robot: r2, at: 5}\n")
+    code, _, err = hfsm_run(capsys, machine("sense", SENSE), "--world", "sim", "--scenario", scene)
+    assert code == 2 and "did you mean 'full'?" in err
+    assert "no robot named" not in err  # a robot refused for its body is no unknown robot
