@@ -7,6 +7,7 @@ The engine reads YAML itself (with line:col errors) and passes the parsed mappin
 
 from __future__ import annotations
 
+import difflib
 import math
 from collections.abc import Mapping
 from importlib import resources
@@ -234,7 +235,10 @@ def resolve(name_or_path: str | Path) -> Path:
     shipped = Path(str(resources.files("sim") / "scenarios" / f"{text}.yaml"))
     if shipped.is_file():
         return shipped
-    raise FileNotFoundError(f"unknown scenario {text!r}; shipped: {', '.join(scenario_names())}")
+    names = scenario_names()
+    close = difflib.get_close_matches(text, names, n=1)
+    hint = f"; did you mean {close[0]!r}?" if close else ""
+    raise FileNotFoundError(f"unknown scenario {text!r}{hint} (shipped: {', '.join(names)})")
 
 
 def load_scenario(name_or_path: str | Path = DEFAULT_SCENARIO) -> Scenario:

@@ -84,6 +84,8 @@ def test_resolve_names_and_paths(tmp_path: Path) -> None:
     assert isinstance(load_scenario(custom), Scenario)
     with pytest.raises(FileNotFoundError, match="shipped"):
         resolve("no_such_scenario")
+    with pytest.raises(FileNotFoundError, match="did you mean 'room_3_tables'"):
+        resolve("room_3_tabels")
     with pytest.raises(FileNotFoundError):
         resolve(tmp_path / "missing.yaml")
 
