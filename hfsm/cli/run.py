@@ -116,6 +116,8 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
     )
     report.findings(loaded.warnings)
     if args.check:
+        if args.param:  # the params given are checked too
+            parse_params(args.param, loaded.roots[0].model, loaded.roots[0].name, loaded.roots[0].doc)
         print(f"{args.file}: ok ({len(loaded.machines)} machines checked)", file=sys.stderr)
         return 0
     top = loaded.roots[0]

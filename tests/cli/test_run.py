@@ -70,6 +70,8 @@ def test_required_param_missing_is_exit_2(machine: Machine, capsys: pytest.Captu
 def test_bad_params(machine: Machine, capsys: pytest.CaptureFixture[str], arg: str, text: str) -> None:
     code, _, err = run(capsys, machine("m", ONE), "--param", arg)
     assert code == 2 and text in err
+    code, _, err = run(capsys, machine("m", ONE), "--param", arg, "--check")  # --check checks them too
+    assert code == 2 and text in err
 
 
 def test_check_and_strict(machine: Machine, capsys: pytest.CaptureFixture[str]) -> None:
