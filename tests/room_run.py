@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from behaviours.room import frames
 from behaviours.simworld import SimWorld
 from hfsm.load import load
 from hfsm.registry import Registry
@@ -35,21 +36,20 @@ class RoomRun:
     holding: dict[str, bool]  # whose hands hold a load at the end
 
 
+def _start(scenario: Scenario, robot: str) -> dict[str, float]:
+    start = scenario.robots[robot]
+    return {"x": start.x, "y": start.y, "yaw": start.yaw}
+
+
 def in_start_frame(scenario: Scenario, robot: str, table: str) -> list[float]:
     """Where the table `table` starts, in the frame `robot` starts in (as the scenario gives it)."""
     spec = dict(zip(scenario.table_ids(), scenario.all_tables, strict=True))[table]
-    start = scenario.robots[robot]
-    yaw = math.radians(start.yaw)
-    dx, dy = spec.x - start.x, spec.y - start.y
-    return [math.cos(yaw) * dx + math.sin(yaw) * dy, -math.sin(yaw) * dx + math.cos(yaw) * dy]
+    return frames.to_local(_start(scenario, robot), [spec.x, spec.y])
 
 
 def to_room(scenario: Scenario, robot: str, point: list[float]) -> list[float]:
     """A point in `robot`'s start frame, in the room's frame (from the start pose the scenario gives)."""
-    start = scenario.robots[robot]
-    yaw = math.radians(start.yaw)
-    x, y = point
-    return [start.x + math.cos(yaw) * x - math.sin(yaw) * y, start.y + math.sin(yaw) * x + math.cos(yaw) * y]
+    return frames.to_room(_start(scenario, robot), point)
 
 
 def pairs_told(pairs: dict[str, tuple[str, str]], channel: str = "") -> dict[str, dict[str, Any]]:
