@@ -115,12 +115,12 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         world_inputs=inputs,
     )
     report.findings(loaded.warnings)
+    top = loaded.roots[0]
     if args.check:
         if args.param:  # the params given are checked too
-            parse_params(args.param, loaded.roots[0].model, loaded.roots[0].name, loaded.roots[0].doc)
+            parse_params(args.param, top.model, top.name, top.doc)
         print(f"{args.file}: ok ({len(loaded.machines)} machines checked)", file=sys.stderr)
         return 0
-    top = loaded.roots[0]
     params = parse_params(args.param, top.model, top.name, top.doc)
     world = _world(args, loaded, registry, factories)
     started = False
