@@ -53,13 +53,15 @@ def tables_of(tasks: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
 
 def make_room_plan(states: Mapping[str, Mapping[str, Any]], tasks: Sequence[Mapping[str, Any]],
                    room: Mapping[str, Any], coeff: Coefficients = PAPER, reach: float = 0.5) -> Plan:
-    """TARARC's steps 2-5 with one group per table, and every table's claimed wall."""
+    """TARARC's steps 2-5 with one group per table, every table's claimed wall, and every robot's
+    colour as it said it (-1: not said), for a robot to look for its partner."""
     tables = tables_of(tasks)
     if len(states) < PAIR * len(tables):
         raise ValueError(f"{len(states)} robots cannot make {len(tables)} pairs")
     plan = make_plan(states, tables, coeff)
     ways = claim_walls(tables, float(room["width"]), float(room["depth"]), reach)
     plan["tables"] = {t["id"]: {**t, "toward": list(ways[t["id"]].toward)} for t in tables}
+    plan["colours"] = {r: int(s.get("colour", -1)) for r, s in sorted(states.items())}
     return plan
 
 
