@@ -71,8 +71,8 @@ def lend(groups: Sequence[Group], needy: int, n_thres: int, robots: Mapping[str,
         for i in givers:
             if sizes[needy] >= n_thres:
                 break
-            kept = [m for m in groups[i].members if m != groups[i].agent][: keep - 1]
-            spare = [m for m in groups[i].members if m != groups[i].agent and m not in kept and m not in given[i]]
+            others = [m for m in groups[i].members if m != groups[i].agent]
+            spare = [m for m in others[keep - 1:] if m not in given[i]]
             if sizes[i] <= n_thres or not spare:
                 continue
             member = min(spare, key=lambda m: (distance(robots[m], target), m))

@@ -39,7 +39,8 @@ def allocate(
     def f(robot: str, order: int, difficulty: float) -> float:
         return belief(p_term(history, robot), difficulty, energy[robot], order, coeff)
 
-    groups = form_groups(robots, len(tasks), relevance_matrix(history, ids), lambda r, o: f(r, o, d_mean), ties)
+    rel = relevance_matrix(history, ids)
+    groups = form_groups(robots, len(tasks), rel, lambda r, o: f(r, o, d_mean), ties)
     by_id = {r.id: r for r in robots}
     agents = [by_id[g.agent] for g in groups]
 

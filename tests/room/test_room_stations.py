@@ -9,8 +9,8 @@ from hypothesis import strategies as st
 
 from behaviours.room.plan import job_of, make_room_plan
 from behaviours.room.stations import room_ties, stations
-from behaviours.tararc.help import lend
 from behaviours.tararc.grouping import Group, Robot
+from behaviours.tararc.help import lend
 
 
 @given(st.integers(2, 5), st.integers(0, 3), st.permutations(list(range(13))), st.integers(0, 3))
