@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import random
 
 import pytest
 from hypothesis import given
@@ -11,7 +12,7 @@ from hypothesis import strategies as st
 
 from behaviours.room.claims import Rect, claim_walls, overlap
 from behaviours.room.frames import at_wall, difficulty_of, relocalise, to_local, to_room
-from behaviours.room.plan import groups_after, job_of, make_room_plan, tables_of
+from behaviours.room.plan import groups_after, job_of, make_room_plan, slide_of, sliding_partners, tables_of
 
 ROOM = {"width": 7.0, "depth": 5.0}
 TASKS = [
@@ -124,6 +125,51 @@ def test_a_pair_tries_again_on_a_new_channel_once_both_gave_up() -> None:
     assert again["channel"] == "table1_r1_r2_1_"
     third = job_of(plan, "r2", [], [], {}, [f"{first}/r1", f"{first}/r2", "table1_r1_r2_1_/r1", "table1_r1_r2_1_/r2"])
     assert third["channel"] == "table1_r1_r2_2_"
+
+
+FIRST = "table1_r1_r2_"
+R1_SLIDES = slide_of("table1", FIRST, "r1", "r2")
+
+
+def test_no_helper_is_lent_to_a_table_its_survivor_slides() -> None:
+    plan = make_room_plan(FOUR, TASKS, ROOM)
+    helped = job_of(plan, "r3", ["r2"], ["table2"], {})
+    assert helped is not None and (helped["role"], helped["partner"]) == ("assistant", "r1")
+    kept = {r: job_of(plan, r, ["r2"], ["table2"], {}, [], [R1_SLIDES]) for r in ("r1", "r3", "r4")}
+    assert {r: (j["role"], j["table"]) for r, j in kept.items() if j} == {
+        "r1": ("leader", "table1"), "r3": ("idle", "table2"), "r4": ("idle", "table2")}
+    assert kept["r1"] is not None and kept["r1"]["channel"] == FIRST  # its own pairing goes on
+    assert job_of(plan, "r2", ["r2"], [], {}, [], [R1_SLIDES]) is None  # the failed robot stays lost
+
+
+def test_a_slide_ends_with_its_table_done_its_pairing_spent_or_its_survivor_lost() -> None:
+    assert sliding_partners(["r2"], [], [], [R1_SLIDES]) == {"r2"}
+    assert sliding_partners(["r2"], ["table1"], [], [R1_SLIDES]) == set()
+    assert sliding_partners(["r2"], [], [f"{FIRST}/r1"], [R1_SLIDES]) == set()
+    assert sliding_partners(["r1", "r2"], [], [], [R1_SLIDES]) == set()
+    assert sliding_partners([], [], [], ["not/a slide"]) == set()
+    plan = make_room_plan(FOUR, TASKS, ROOM)
+    failed = job_of(plan, "r3", ["r2"], ["table2"], {}, [f"{FIRST}/r1"], [R1_SLIDES])
+    assert failed is not None and (failed["role"], failed["partner"]) == ("assistant", "r1")  # help comes
+    spare = job_of(make_room_plan(SIX, TASKS, ROOM), "r5", ["r2"], [], {}, [], [R1_SLIDES])
+    assert spare is not None and spare["role"] == "spare"  # the group's spare is not lent either
+
+
+NEWS = st.fixed_dictionaries({
+    "lost": st.lists(st.sampled_from(sorted(SIX)), max_size=3),
+    "done": st.lists(st.sampled_from(["table1", "table2"]), max_size=2),
+    "spent": st.lists(st.sampled_from([f"{FIRST}/r1", f"{FIRST}/r2", "table2_r4_r5_/r4"]), max_size=3),
+    "sliding": st.lists(st.sampled_from([R1_SLIDES, slide_of("table1", FIRST, "r2", "r1"),
+                                         slide_of("table2", "table2_r4_r5_", "r4", "r5")]), max_size=3)})
+
+
+@given(NEWS, st.randoms())
+def test_jobs_are_the_same_for_the_same_news_heard_in_any_order(news: dict[str, list[str]], rnd: random.Random) -> None:
+    plan = make_room_plan(SIX, TASKS, ROOM)
+    shuffled = {k: rnd.sample(v, len(v)) + v[:1] for k, v in news.items()}
+    for robot in sorted(SIX):
+        assert job_of(plan, robot, news["lost"], news["done"], {}, news["spent"], news["sliding"]) == job_of(
+            plan, robot, shuffled["lost"], shuffled["done"], {}, shuffled["spent"], shuffled["sliding"])
 
 
 @given(st.floats(-3, 3), st.floats(-3, 3), st.floats(-170, 170), st.floats(-0.3, 0.3), st.floats(-0.3, 0.3),
