@@ -90,28 +90,36 @@ def phase(line: RoomLine, robot: str, at: float) -> str:
     return "mid-carry" if line.lifted.get(robot, float("inf")) <= at else "before lift"
 
 
+def failures_of(line: RoomLine, scenario: dict[str, Any]) -> list[dict[str, Any]]:
+    """Every robot that failed, in time order, with what it was doing (`phase`); a failure the scenario
+    names (`at:`) that the run ended before is listed as `not reached`. The `rate:` form names no time:
+    only the failures that happened are listed."""
+    seen = sorted(line.failed.items(), key=lambda item: (item[1], item[0]))
+    out = [{"robot": robot, "at": at, "phase": phase(line, robot, at)} for robot, at in seen]
+    out += [{"robot": f["robot"], "at": f["at"], "phase": "not reached"}
+            for f in scenario.get("failures", []) if "robot" in f and f["robot"] not in line.failed]
+    return out
+
+
 def measure(line: RoomLine, result_score: dict[str, Any], scenario: dict[str, Any],
             outcomes: dict[str, str | None], time: float, error: str | None) -> dict[str, Any]:
     tables = [str(t["id"]) for t in scenario["tables"]]
     distances = result_score.get("table_wall_distances") or [result_score["table_wall_distance"]]
     at_walls = all(d is not None and d <= 0.15 for d in distances)
-    planned = scenario.get("failures", [])
-    failed_phase = phase(line, planned[0]["robot"], planned[0]["at"]) if planned else ""
+    failures = failures_of(line, scenario)
     # The issue's failure model: a robot failing mid-carry drops what it holds. That fall is the
     # failure's, not the team's; any other drop (a pair losing its table) still fails the room.
-    dropped_by_failure = bool(result_score["dropped"]) and failed_phase == "mid-carry"
+    dropped_by_failure = bool(result_score["dropped"]) and any(f["phase"] == "mid-carry" for f in failures)
     cleared = at_walls and (not result_score["dropped"] or dropped_by_failure)
     out: dict[str, Any] = {
         "cleared": cleared, "clear_time": cleared_at(line.carries, tables) if cleared else None,
         "time": time, "error": error, "distances": distances, "dropped": result_score["dropped"],
         "dropped_by_failure": dropped_by_failure, "collisions": result_score["robot_collisions"],
         "outcomes": outcomes, "carries": [dict(c) for c in line.carries],
-        "failed": line.failed,
+        "failed": line.failed, "failures": [{**f, "recovered": cleared} for f in failures],
     }
-    if planned:
-        f = planned[0]
-        out["failure"] = {"robot": f["robot"], "at": f["at"], "phase": failed_phase,
-                          "recovered": cleared}
+    if failures:
+        out["failure"] = out["failures"][0]
     if not cleared:
         out["endings"] = {a: dict(sorted(c.items())) for a, c in sorted(line.endings.items())}
     return out
