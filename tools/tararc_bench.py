@@ -5,6 +5,7 @@
     .venv/bin/python tools/tararc_bench.py --from docs/results/tararc.json   # the docs again, no run
     tools/tararc_bench.py --shard 1/2 & tools/tararc_bench.py --shard 2/2   # the first stage in parts
     tools/tararc_bench.py --merge          # the parts read back, the help trials run, the docs
+    tools/tararc_bench.py --only ability   # Figure 8 run again, the rest read from --raw, the docs
 
 Table 1 (the six priority orders of 3 tasks), Figure 5 (robot density), Figure 6 (10 to 50
 robots), Figure 7 (robot speed), Figure 8 (4 allocations sharing a history file) and the help
@@ -31,7 +32,7 @@ sys.path.insert(0, str(ROOT))
 
 from tools.docsection import write_section  # noqa: E402
 from tools.sweep import Shard, SweepError, add_executor_args, merge_shards, run_sweep, shard_path, write_shard  # noqa: E402
-from tools.tararc.experiments import QUICK, Config, help_trials, main_trials  # noqa: E402
+from tools.tararc.experiments import EXPERIMENTS, QUICK, Config, help_trials, main_trials  # noqa: E402
 from tools.tararc.report import write  # noqa: E402
 from tools.tararc.trials import BenchTrial, run_bench_trial  # noqa: E402
 
@@ -65,6 +66,21 @@ def run_bench(config: Config, executor: str = "local", workers: int = 2,
     return results + [{**r, "trial": r["trial"] + len(results)} for r in helped]
 
 
+def rerun(config: Config, only: list[str], saved: dict[str, Any], executor: str = "local",
+          workers: int = 2) -> list[dict[str, Any]]:
+    """The saved results with the first-stage experiments `only` run again in their place (the help
+    trials, which need Table 1's, cannot be chosen), renumbered in order."""
+    if not only or "help" in only or not set(only) <= set(EXPERIMENTS):
+        raise SweepError(f"--only takes experiments among {', '.join(e for e in EXPERIMENTS if e != 'help')}")
+    new = run_sweep(run_bench_trial, [t for t in main_trials(config) if t.experiment in only],
+                    executor=executor, workers=workers, label=LABEL)
+    old = saved["results"]
+    at = next((i for i, r in enumerate(old) if r["experiment"] in [*only, "help"]), len(old))
+    kept = [r for r in old if r["experiment"] not in only]
+    merged = kept[:at] + new + kept[at:]
+    return [{**r, "trial": i} for i, r in enumerate(merged)]
+
+
 def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--quick", action="store_true", help="a smoke run: few points, one seed")
@@ -80,6 +96,9 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--from", dest="saved", type=Path, help="no run: write the docs again from a --raw file")
     p.add_argument("--shard", type=Shard.parse, help="run shard I of N (I/N) of the first stage, to --shards")
     p.add_argument("--merge", action="store_true", help="read the first stage from --shards, run the rest")
+    p.add_argument("--only", type=lambda text: text.split(","), metavar="EXP[,EXP]",
+                   help=f"run only these experiments ({', '.join(EXPERIMENTS[:-1])}) again; the rest "
+                   "from --raw")
     p.add_argument("--shards", type=Path, default=ROOT / "out" / "shards", help="folder of shard files")
     args = p.parse_args(argv)
     config = replace(QUICK if args.quick else Config(), first_seed=args.first_seed)
@@ -87,8 +106,24 @@ def main(argv: list[str] | None = None) -> int:
         config = replace(config, seeds=args.seeds)
     if args.sizes:
         config = replace(config, sizes=tuple(int(n) for n in args.sizes.split(",")))
+    command = " ".join(["tools/tararc_bench.py", *(argv if argv is not None else sys.argv[1:])])
     if args.saved:
         saved = json.loads(args.saved.read_text(encoding="utf-8"))
+    elif args.only:
+        started = time.perf_counter()
+        try:
+            if not args.raw.exists():
+                raise SweepError(f"--only runs some experiments again: the others come from {args.raw}, "
+                                 "which does not exist (run the whole bench first)")
+            saved = json.loads(args.raw.read_text(encoding="utf-8"))
+            saved["results"] = rerun(config, args.only, saved, args.executor, args.workers)
+        except SweepError as exc:
+            print(f"tararc_bench: {exc}", file=sys.stderr)
+            return 2
+        trials = sum(r["experiment"] in args.only for r in saved["results"])
+        saved.setdefault("reruns", []).append(
+            {"command": command, "trials": trials, "wall": round(time.perf_counter() - started, 1)})
+        args.raw.write_text(json.dumps(saved, indent=1) + "\n", encoding="utf-8")
     else:
         started = time.perf_counter()
         try:
@@ -102,17 +137,17 @@ def main(argv: list[str] | None = None) -> int:
         except SweepError as exc:
             print(f"tararc_bench: {exc}", file=sys.stderr)
             return 2
-        command = " ".join(["tools/tararc_bench.py", *(argv if argv is not None else sys.argv[1:])])
         saved = {"command": command, "wall": time.perf_counter() - started, "workers": args.workers,
                  "results": results}
         args.raw.parent.mkdir(parents=True, exist_ok=True)
         args.raw.write_text(json.dumps(saved, indent=1) + "\n", encoding="utf-8")
     command, wall, results = saved["command"], saved["wall"], saved["results"]
-    lines = write(results, args.doc, args.figures, command, wall, len(results))
-    write_section(args.perf, "tararc_bench", [
-        f"`{command}`: {len(results)} trials of machines/tararc.yaml (10 to 50 light robots) in "
-        f"{wall / 60:.1f} min wall with {saved['workers']} worker processes, under `nice -n 10` on the "
-        "shared 2-core machine (target: under 20 minutes on 2 cores); results in docs/TARARC.md."])
+    lines = write(results, args.doc, args.figures, command, wall, len(results), saved.get("reruns", []))
+    if not saved.get("reruns"):  # the whole bench's wall time, not a part's
+        write_section(args.perf, "tararc_bench", [
+            f"`{command}`: {len(results)} trials of machines/tararc.yaml (10 to 50 light robots) in "
+            f"{wall / 60:.1f} min wall with {saved['workers']} worker processes, under `nice -n 10` on the "
+            "shared 2-core machine (target: under 20 minutes on 2 cores); results in docs/TARARC.md."])
     print("\n".join(lines))
     print(f"wrote {args.doc} and {args.figures} ({wall / 60:.1f} min)", file=sys.stderr)
     return 0

@@ -2,10 +2,11 @@
 assists) and its spares; and what each robot does after losses and finished tables.
 
 A plan is `behaviours.tararc.plan`'s (groups with their tasks, start positions, beliefs) plus the
-tables and their claimed walls. What a robot does is a pure function of the plan and of three
-things the team learns over the radio, each a set that only grows: the robots lost, the tables done
-(at a wall), where survivors saw dropped tables and the pairings spent. Robots that heard the
-same, in any order, agree.
+tables and their claimed walls. What a robot does is a pure function of the plan and of what
+the team learns over the radio, each a set that only grows: the robots lost, the tables done
+(at a wall), where survivors saw dropped tables, the pairings spent and the slides (a survivor
+sliding its table to the wall alone, its partner failed). Robots that heard the same, in any order,
+agree.
 
     job = {"role": "leader" | "assistant" | "spare" | "idle", "table": "table1" | "",
            "partner": "r2" | "", "channel": "table1_r1_r2_" | "", "at": [x, y], "toward": [x, y],
@@ -15,7 +16,10 @@ same, in any order, agree.
 ended without its table at a wall says the pairing is spent (news too); once both robots of a pair
 said so, the same pair tries again on a new channel (`channel_of`). A spare waits in its
 group until help makes it an assistant; `idle` robots' tables are done (or they are in no group with
-work): they may be lent to a group left short (below).
+work): they may be lent to a group left short (below). While a survivor slides its table alone
+(`slide_of`), its failed partner still counts as in its group, so no helper is lent to that table;
+a slide ends with the table done or the survivor's pairing spent (or the survivor lost), and then
+help comes as for any loss.
 """
 
 from __future__ import annotations
@@ -27,6 +31,7 @@ from typing import Any
 
 from behaviours.room.claims import claim_walls
 from behaviours.room.frames import difficulty_of
+from behaviours.room.stations import room_ties
 from behaviours.tararc.formulas import PAPER, Coefficients
 from behaviours.tararc.plan import Plan, after_losses, make_plan
 
@@ -49,13 +54,16 @@ def tables_of(tasks: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
 
 def make_room_plan(states: Mapping[str, Mapping[str, Any]], tasks: Sequence[Mapping[str, Any]],
                    room: Mapping[str, Any], coeff: Coefficients = PAPER, reach: float = 0.5) -> Plan:
-    """TARARC's steps 2-5 with one group per table, and every table's claimed wall."""
+    """TARARC's steps 2-5 with one group per table (relevance ties by the robots' stations,
+    `stations.room_ties`), every table's claimed wall, and every robot's colour as it said it (-1:
+    not said), for a robot to look for its partner."""
     tables = tables_of(tasks)
     if len(states) < PAIR * len(tables):
         raise ValueError(f"{len(states)} robots cannot make {len(tables)} pairs")
-    plan = make_plan(states, tables, coeff)
+    plan = make_plan(states, tables, coeff, room_ties(states, tables))
     ways = claim_walls(tables, float(room["width"]), float(room["depth"]), reach)
     plan["tables"] = {t["id"]: {**t, "toward": list(ways[t["id"]].toward)} for t in tables}
+    plan["colours"] = {r: int(s.get("colour", -1)) for r, s in sorted(states.items())}
     return plan
 
 
@@ -65,10 +73,11 @@ def _where(plan: Plan, robot: str) -> tuple[float, float]:
 
 
 def groups_after(plan: Plan, lost: Sequence[str], done: Sequence[str]) -> list[dict[str, Any]]:
-    """Step 7 (TARARC's 7a and 7b, `after_losses`), then a group left short of a pair with its table
+    """Step 7 (TARARC's 7a and 7b, `after_losses`: a group gives only robots beyond its pair, its
+    agent and assistant carry on), then a group left short of a pair with its table
     not done borrows the robots of the groups whose tables are done, nearest its agent (or table)
     first, ties by id; the first borrowed of a group with no robot left becomes its agent."""
-    groups = [dict(g) for g in after_losses(plan, lost, PAIR)["groups"]]
+    groups = [dict(g) for g in after_losses(plan, lost, PAIR, keep=PAIR)["groups"]]
     finished = set(done)
     for needy in groups:
         if needy["task"]["id"] in finished:
@@ -111,15 +120,38 @@ def channel_of(table: str, leader: str, assistant: str, spent: Sequence[str]) ->
     return f"{base}{tries}_" if tries else base
 
 
+def slide_of(table: str, channel: str, robot: str, partner: str) -> str:
+    """The news that `robot`, left alone on `channel` by `partner`, slides `table` to its wall."""
+    return f"{table}/{channel}/{robot}/{partner}"
+
+
+def sliding_partners(lost: Sequence[str], done: Sequence[str], spent: Sequence[str],
+                     sliding: Sequence[str]) -> set[str]:
+    """The failed partners of the slides still going on: the survivor is not lost, its table is not
+    done and it has not said its pairing spent (a slide that ended without the table at its wall)."""
+    gone, finished, over = set(lost), set(done), set(spent)
+    kept = set()
+    for entry in set(sliding):
+        parts = entry.split("/")
+        if len(parts) != 4:
+            continue
+        table, channel, robot, partner = parts
+        if robot not in gone and table not in finished and f"{channel}/{robot}" not in over:
+            kept.add(partner)
+    return kept
+
+
 def job_of(plan: Plan, me: str, lost: Sequence[str], done: Sequence[str],
-           seen: Mapping[str, Sequence[float]], spent: Sequence[str] = ()) -> dict[str, Any] | None:
+           seen: Mapping[str, Sequence[float]], spent: Sequence[str] = (),
+           sliding: Sequence[str] = ()) -> dict[str, Any] | None:
     """What robot `me` does; None when it is among the lost."""
     if me in set(lost):
         return None
     alive = sorted(r for r in plan["robots"] if r not in set(lost))
     job: dict[str, Any] = {"role": "idle", "table": "", "partner": "", "channel": "", "at": [], "toward": [],
                            "group": -1, "others": [r for r in alive if r != me], "key": key_of(lost, done)}
-    for index, g in enumerate(groups_after(plan, lost, done)):
+    grouped = sorted(set(lost) - sliding_partners(lost, done, spent, sliding))
+    for index, g in enumerate(groups_after(plan, grouped, done)):
         if me not in g["members"]:
             continue
         table = plan["tables"][g["task"]["id"]]

@@ -28,14 +28,15 @@ def room_allocate(ctx: Context, *, mine: dict[str, Any], heard: dict[str, Any], 
 
 @primitive(outcomes=["assigned", "excluded"], outputs=["job"])
 def room_assign(ctx: Context, *, plan: dict[str, Any], lost: list[Any], done: list[Any], seen: dict[str, Any],
-                start: dict[str, Any], spent: list[Any] | None = None) -> Outcome:
+                start: dict[str, Any], spent: list[Any] | None = None,
+                sliding: list[Any] | None = None) -> Outcome:
     """This robot's job after the robots `lost` and the tables `done`, a dropped table where a
-    survivor `seen` it, on a channel no `spent` pairing used; `table` and `toward` in its own start
-    frame (from `start`, where it was told it was placed). `excluded` when a teammate took this
-    robot for lost."""
+    survivor `seen` it, on a channel no `spent` pairing used, no helper lent to a table a survivor
+    is `sliding` alone; `table` and `toward` in its own start frame (from `start`, where it was told
+    it was placed). `excluded` when a teammate took this robot for lost."""
     where = {str(t): [float(v["x"]), float(v["y"])] for t, v in seen.items()}
     job = job_of(plan, ctx.agent, [str(r) for r in lost], [str(t) for t in done], where,
-                 [str(c) for c in spent or []])
+                 [str(c) for c in spent or []], [str(e) for e in sliding or []])
     if job is None:
         return Outcome("excluded", job={})
     local = {"table_local": to_local(start, job["at"]) if job["at"] else [],
@@ -60,20 +61,24 @@ def _newer(a: dict[str, Any], b: dict[str, Any]) -> bool:
     return (float(a["t"]), str(a["by"])) > (float(b["t"]), str(b["by"]))
 
 
-@primitive(outcomes=["changed"], outputs=["lost", "done", "seen", "spent"])
+@primitive(outcomes=["changed"], outputs=["lost", "done", "seen", "spent", "sliding"])
 def room_watch(ctx: Context, *, team: list[Any], lost: list[Any], done: list[Any], seen: dict[str, Any],
-               spent: list[Any] | None = None, silence: float = 5.0, message: str = "room_alive") -> Outcome:
-    """Listen to the team's heartbeats (`message`, said with data {lost, done, seen, spent}) until the
-    team knows more than given: a robot silent for `silence` s or said lost, a table said done, a
-    dropped table seen later, a pairing spent. Each is a set that only grows (a later sighting
-    replaces an earlier one), so robots that heard the same news, in any order, agree."""
+               spent: list[Any] | None = None, sliding: list[Any] | None = None, silence: float = 5.0,
+               message: str = "room_alive") -> Outcome:
+    """Listen to the team's heartbeats (`message`, said with data {lost, done, seen, spent, sliding})
+    until the team knows more than given: a robot silent for `silence` s or said lost, a table said
+    done, a dropped table seen later, a pairing spent, a table slid alone. Each is a set that only
+    grows (a later sighting replaces an earlier one), so robots that heard the same news, in any
+    order, agree."""
     known_lost, known_done = {str(r) for r in lost}, {str(t) for t in done}
     known_spent = {str(c) for c in spent or []}
+    known_sliding = {str(e) for e in sliding or []}
     known_seen = {str(t): dict(v) for t, v in seen.items()}
     watched = {str(r) for r in team} - known_lost - {ctx.agent}
     heard = dict.fromkeys(watched, ctx.tick)
     quiet = span_ticks(silence, ctx.dt)
-    given = (set(known_lost), set(known_done), {t: dict(v) for t, v in known_seen.items()}, set(known_spent))
+    given = (set(known_lost), set(known_done), {t: dict(v) for t, v in known_seen.items()}, set(known_spent),
+             set(known_sliding))
 
     def news() -> bool:
         while (m := ctx.receive(message)) is not None:
@@ -83,16 +88,18 @@ def room_watch(ctx: Context, *, team: list[Any], lost: list[Any], done: list[Any
             known_lost.update(str(r) for r in data.get("lost", []))
             known_done.update(str(t) for t in data.get("done", []))
             known_spent.update(str(c) for c in data.get("spent", []))
+            known_sliding.update(str(e) for e in data.get("sliding", []))
             for table, sight in data.get("seen", {}).items():
                 mine = known_seen.get(str(table))
                 if mine is None or _newer(sight, mine):
                     known_seen[str(table)] = dict(sight)
         known_lost.update(r for r, tick in heard.items() if ctx.tick - tick >= quiet)
-        return (known_lost, known_done, known_seen, known_spent) != given
+        return (known_lost, known_done, known_seen, known_spent, known_sliding) != given
 
     ctx.wait_until(news)
     return Outcome("changed", lost=sorted(known_lost), done=sorted(known_done),
-                   seen=dict(sorted(known_seen.items())), spent=sorted(known_spent))
+                   seen=dict(sorted(known_seen.items())), spent=sorted(known_spent),
+                   sliding=sorted(known_sliding))
 
 
 @primitive(outcomes=["relocalised", "kept"], outputs=["start"])

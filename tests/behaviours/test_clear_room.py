@@ -45,14 +45,15 @@ def test_two_pairs_clear_two_tables(tmp_path: Path, capsys: pytest.CaptureFixtur
 
 
 @pytest.mark.slow
-def test_a_robot_failing_mid_carry_is_replaced_and_its_table_taken_up_again(
+def test_a_robot_failing_on_its_way_leaves_its_partner_to_slide_the_table(
         tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    """r2, table1's assistant, fails while carrying: r1 lands the table, says where it left it, and
-    table2's pair, once done, lends r1 a new assistant."""
+    """r2, table1's assistant, fails at 12 s on its way to the table: r1, its partner silent, tells
+    the team it slides table1 alone (so no helper is lent) and does."""
     result = clear("room_2_tables_fail", tmp_path, capsys)
     assert_cleared(result, {"r2"})
-    carries = result["agents"]["r1"]["outputs"]["carries"]
-    assert [c["outcome"] for c in carries][-1] == "at_wall" and carries[-1]["partner"] in {"r3", "r4"}
+    assert result["agents"]["r1"]["outputs"]["carries"] == [
+        {"table": "table1", "role": "leader", "partner": "r2", "outcome": "at_wall"}]
+    assert all(c["table"] == "table2" for a in ("r3", "r4") for c in result["agents"][a]["outputs"]["carries"])
 
 
 @pytest.mark.slow
@@ -71,3 +72,17 @@ def test_a_robot_failing_mid_carry_at_the_table_its_survivor_slides_the_table_to
     assert_cleared(result, {"r2"})
     carries = result["agents"]["r1"]["outputs"]["carries"]
     assert carries[0] == {"table": "table1", "role": "leader", "partner": "r2", "outcome": "at_wall"}
+    helpers = [c for a in ("r3", "r4") for c in result["agents"][a]["outputs"]["carries"] if c["table"] == "table1"]
+    assert helpers == []  # the team heard of the slide and lent table1 nobody
+
+
+@pytest.mark.slow
+def test_a_leader_failing_at_its_side_before_its_assistant_is_at_the_table(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """r1, table1's leader, fails at 20 s at its long side while r2 still waits to walk round: r2
+    sees no table edge below it, walks to the long side away from r1 (seen by the colour r1 said),
+    steps in and slides the table to the claimed wall alone; no helper is lent."""
+    result = clear("room_2_tables_side_fail", tmp_path, capsys)
+    assert_cleared(result, {"r1"})
+    assert result["agents"]["r2"]["outputs"]["carries"] == [
+        {"table": "table1", "role": "assistant", "partner": "r1", "outcome": "at_wall"}]

@@ -89,7 +89,8 @@ def test_the_report_from_results(tmp_path: Path) -> None:
     def run(exp: str, x: Any, done: bool = True, **more: Any) -> dict[str, Any]:
         return {"experiment": exp, "x": x, "seed": 1, "completed": done, "grouped": 10.0 * (1 + (x == 20)),
                 "enclosed": 40.0 if done else math.inf, "converge": 30.0 if done else math.inf,
-                "collisions": 0, "groups": [{"B": 3.0, "difficulty": 0.3}], **more}
+                "collisions": 0, "groups": [{"agent": "r1", "members": ["r1"], "B": 3.0, "F": 0.5, "difficulty": 0.3}],
+                **more}
 
     results = [run("table1", [1, 2, 3]), run("table1", [3, 2, 1], done=False), run("density", 1.0),
                run("size", 10), run("size", 20), run("speed", 0.5),
@@ -134,3 +135,30 @@ def test_the_time_to_group_counts_runs_that_grouped_but_missed_a_task() -> None:
           {"completed": False, "grouped": math.inf, "converge": math.inf}]
     assert timed(rs, "grouped") == [20.0, 10.0]
     assert timed(rs, "converge") == [5.0]
+
+
+@pytest.mark.slow
+def test_only_figure_8_runs_again_and_its_group_failure_shows(tmp_path: Path) -> None:
+    import json
+
+    import tools.tararc_bench as bench
+
+    raw = tmp_path / "tararc.json"
+    kept = {"experiment": "table1", "x": [1, 2, 3], "seed": 1, "trial": 0, "completed": True, "grouped": 8.0,
+            "enclosed": 20.0, "converge": 12.0, "collisions": 0, "wall": 1.0}
+    raw.write_text(json.dumps({"command": "tools/tararc_bench.py", "wall": 60.0, "workers": 2,
+                               "results": [kept]}), encoding="utf-8")
+    doc, figures = tmp_path / "TARARC.md", tmp_path / "figures"
+    args = ["--quick", "--only", "ability", "--workers", "1", "--raw", str(raw), "--doc", str(doc),
+            "--figures", str(figures), "--perf", str(tmp_path / "PERF.md")]
+    assert bench.main(args) == 0
+    saved = json.loads(raw.read_text(encoding="utf-8"))
+    assert [r["experiment"] for r in saved["results"]] == ["table1", "ability"]
+    runs = saved["results"][1]["runs"]
+    assert [run["completed"] for run in runs] == [True, True, False, True]
+    middle = next(g for g in runs[2]["groups"] if g["difficulty"] == 0.6)
+    assert sorted(runs[2]["failed"]) == sorted(middle["members"])  # the group of the second hardest, wholly
+    text = doc.read_text(encoding="utf-8")
+    assert "task 0.6 → 0.3 (the easiest)" in text and "Rerun since: `tools/tararc_bench.py --quick --only" in text
+    assert not (tmp_path / "PERF.md").exists()
+    assert bench.main([*args[:2], "help", *args[3:]]) == 2

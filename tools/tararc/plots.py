@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
+from typing import Any
 
 from matplotlib.figure import Figure
 
@@ -38,22 +39,34 @@ def curve_plot(points: Sequence[Point], every: Sequence[Point], path: Path, *, x
     _save(fig, path)
 
 
-def ability_plot(runs: Sequence[Sequence[Point]], path: Path, title: str) -> None:
-    """Figure 8: for each of the successive allocations (one marker each), every group's B against
-    the difficulty of the task it won; a line joins each group's points across allocations."""
-    fig = Figure(figsize=(6.4, 4.2), dpi=100)
+def ability_plot(allocations: Sequence[Mapping[int, Mapping[str, Any]]], path: Path, title: str) -> None:
+    """Figure 8 as the paper draws it: each group's ability B (x) against the difficulty of the task it
+    won (y), one marker per allocation, a line joining each group's allocations in order; a task
+    that failed is circled in red."""
+    fig = Figure(figsize=(6.4, 4.4), dpi=100)
     ax = fig.subplots()
     markers = "os^D*v"
-    groups = max((len(r) for r in runs), default=0)
-    for g in range(groups):
-        pts = [run[g] for run in runs if g < len(run)]
-        ax.plot([b for b, _ in pts], [d for _, d in pts], linewidth=1, alpha=0.5, label=f"group {g}")
-    for k, run in enumerate(runs):
-        ax.scatter([b for b, _ in run], [d for _, d in run], marker=markers[k % len(markers)], s=40,
-                   label=f"allocation {k + 1}", zorder=3)
+    for name in sorted({n for alloc in allocations for n in alloc}):
+        pts = [alloc[name] for alloc in allocations if name in alloc]
+        line = ax.plot([g["B"] for g in pts], [g["difficulty"] for g in pts], linewidth=1.2, alpha=0.7,
+                       label=f"group {name}")[0]
+        for k, alloc in enumerate(allocations):
+            if name in alloc:
+                g = alloc[name]
+                ax.scatter([g["B"]], [g["difficulty"]], marker=markers[k % len(markers)], s=46,
+                           color=line.get_color(), zorder=3)
+                ax.annotate(str(k + 1), (g["B"], g["difficulty"]), textcoords="offset points", xytext=(5, 5),
+                            fontsize=7)
+                if not g["ok"]:
+                    ax.scatter([g["B"]], [g["difficulty"]], s=220, facecolors="none", edgecolors="red",
+                               linewidths=1.5, zorder=4)
+    for k in range(len(allocations)):
+        ax.scatter([], [], marker=markers[k % len(markers)], color="grey", label=f"allocation {k + 1}")
+    ax.scatter([], [], s=120, facecolors="none", edgecolors="red", label="its task failed")
     ax.set_xlabel("group ability: B = F/C of the group's agent for the task it won (eq. 4)")
     ax.set_ylabel("difficulty of the task won")
+    ax.set_ylim(0, 1)
     ax.set_title(title, fontsize=10)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7, loc="best")
+    ax.legend(fontsize=7, loc="lower right")
     _save(fig, path)

@@ -9,6 +9,7 @@ from pathlib import Path
 from typing import Any
 
 from tools.docsection import write_section
+from tools.tararc.ability import chain
 from tools.tararc.experiments import PAPER_SAYS, PAPER_TABLE1
 from tools.tararc.plots import ability_plot, curve_plot
 
@@ -82,20 +83,54 @@ def growth(points: Points) -> str:
             f"{t0:.1f} s to {t1:.1f} s ({t1 / t0:.2f} times).")
 
 
+def _cell(g: dict[str, Any]) -> str:
+    return f"{g['B']:.2f} (F {g['F']:.2f}) → {g['difficulty']:g}" + ("" if g["ok"] else ", **failed**")
+
+
 def ability(results: Results, figures: Path) -> list[str]:
-    lines = ["| chain | allocation | group: B for the task won (its difficulty) | tasks completed |",
-             "|---|---|---|---|"]
-    first: list[list[tuple[float, float]]] = []
-    for r in [r for r in results if r["experiment"] == "ability"]:
-        runs = []
-        for k, run in enumerate(r["runs"]):
-            pts = [(g["B"], g["difficulty"]) for g in run.get("groups", [])]
-            runs.append(pts)
-            shown = ", ".join(f"{i}: {b:.2f} ({d:g})" for i, (b, d) in enumerate(pts))
-            lines.append(f"| {r['x']} | {k + 1} | {shown} | {'yes' if run['completed'] else 'no'} |")
-        first = first or runs
-    ability_plot(first, figures / "fig8_ability.png", "Figure 8: group ability against task difficulty, "
-                 "4 allocations sharing one history (a robot fails in the third)")
+    """Figure 8: each chain's allocations, groups named as the paper's, and the paper's three claims
+    counted over the chains."""
+    chains = [chain(r["runs"]) for r in results if r["experiment"] == "ability"]
+    names = sorted({n for c in chains for alloc in c for n in alloc})
+    head = " | ".join(f"group {n}: B (F) → difficulty won" for n in names)
+    lines = [f"| chain | allocation | {head} |", "|---|---|" + "---|" * len(names)]
+    for k, c in enumerate(chains):
+        for a, alloc in enumerate(c):
+            cells = " | ".join(_cell(alloc[n]) if n in alloc else "" for n in names)
+            lines.append(f"| {k} | {a + 1} | {cells} |")
+    if chains:
+        ability_plot(chains[0], figures / "fig8_ability.png",
+                     "Figure 8: 4 allocations sharing one history; group 0 fails in the third")
+    return [*lines, "", *_ability_claims(chains)]
+
+
+def _ability_claims(chains: list[list[dict[int, dict[str, Any]]]]) -> list[str]:
+    allocs = [alloc for c in chains for alloc in c]
+    if not allocs:
+        return []
+    hardest = [max(g["difficulty"] for g in alloc.values()) for alloc in allocs]
+    top = sum(2 in alloc and alloc[2]["difficulty"] == h for alloc, h in zip(allocs, hardest, strict=True))
+    lines = ["| paper (Figure 8's text) | ours |", "|---|---|",
+             f"| group 2 always the most able, always gets the hardest task (0.9) | group 2 won the hardest "
+             f"task in {top} of {len(allocs)} allocations |"]
+    drops = []
+    for c in chains:
+        if len(c) >= 4 and 0 in c[2] and 0 in c[3]:
+            before, after = c[2][0], c[3][0]
+            easiest = after["difficulty"] == min(g["difficulty"] for g in c[3].values())
+            drops.append(f"B {before['B']:.2f} → {after['B']:.2f}, F {before['F']:.2f} → {after['F']:.2f}, "
+                         f"task {before['difficulty']:g} → {after['difficulty']:g}"
+                         + (" (the easiest)" if easiest else ""))
+    if drops:
+        lines.append("| group 0 fails its third task; its ability drops and in the fourth it gets the "
+                     f"easiest | allocation 3 → 4 ({len(drops)} of {len(chains)} chains): "
+                     f"{'; '.join(dict.fromkeys(drops))} |")
+    ones = [" → ".join(f"{alloc[1]['B']:.2f}" for alloc in c if 1 in alloc) for c in chains]
+    second = sum(1 in alloc and sorted(g["difficulty"] for g in alloc.values())[-2] == alloc[1]["difficulty"]
+                 for alloc in allocs)
+    lines.append("| group 1's ability keeps increasing; it sometimes gets the second hardest task "
+                 f"| group 1's B: {'; '.join(dict.fromkeys(ones))}; the second hardest in {second} of "
+                 f"{len(allocs)} allocations |")
     return lines
 
 
@@ -134,10 +169,14 @@ def beaten(results: Results) -> list[str]:
     ]
 
 
-def write(results: Results, doc: Path, figures: Path, command: str, wall: float, trials: int) -> list[str]:
-    """Write the figures and the `tararc_bench` section of `doc`; returns the section's lines."""
+def write(results: Results, doc: Path, figures: Path, command: str, wall: float, trials: int,
+          reruns: Sequence[dict[str, Any]] = ()) -> list[str]:
+    """Write the figures and the `tararc_bench` section of `doc`; returns the section's lines.
+    `reruns`: the experiments run again since (`--only`), each `{command, trials, wall}`."""
     rel = figures.relative_to(doc.parent)
-    lines = [f"Command: `{command}` ({trials} trials, {wall / 60:.1f} min wall). Times are simulated "
+    again = "".join(f" Rerun since: `{r['command']}` ({r['trials']} trials, {r['wall']:.0f} s wall)."
+                    for r in reruns)
+    lines = [f"Command: `{command}` ({trials} trials, {wall / 60:.1f} min wall).{again} Times are simulated "
              "seconds; medians over the trials that completed (the time to group: over those that "
              "grouped); ∞: none did.", "",
              "### Against the paper (issue 9, point 5)", "", *beaten(results), "",

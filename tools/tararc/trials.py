@@ -3,6 +3,7 @@ with machines/tararc.yaml in the pybullet world, scored from its trace. What swe
 
 from __future__ import annotations
 
+import math
 import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -10,21 +11,19 @@ from typing import Any
 
 import yaml
 
-from behaviours.tararc.formulas import belief, efficiency
-from behaviours.tararc.grouping import Robot, distance
-from behaviours.tararc.history import p_term
-from behaviours.tararc.plan import history_of
 from behaviours.trial import TrialSpec, run_trial
+from tools.tararc.ability import failing_group, group_abilities
 from tools.tararc.measure import Timeline, measure
 
+HELP_AT = 0.3  # a failure comes this fraction of the way from grouped to enclosed (mid-move)
 MACHINE = Path(__file__).resolve().parents[2] / "machines" / "tararc.yaml"
 
 
 @dataclass(frozen=True)
 class BenchTrial:
     """`experiment` and `x` say where the result goes; `runs` > 1 runs the scenario again that many
-    times with one history file (seeds seed, seed+1, ...), `fail_in_run` adds `failures` to that run
-    only (1-based; 0: to every run)."""
+    times with one history file (seeds seed, seed+1, ...); in run `fail_group_in` (1-based; 0: none)
+    every robot of one group fails mid-move (`group_failure`)."""
 
     experiment: str
     x: Any
@@ -33,21 +32,7 @@ class BenchTrial:
     params: dict[str, Any] = field(default_factory=dict)
     max_time: float = 400.0
     runs: int = 1
-    failures: tuple[dict[str, Any], ...] = ()
-    fail_in_run: int = 0
-
-
-def group_abilities(first: dict[str, Any]) -> list[dict[str, float]]:
-    """Each group's B (eq. 4) for the task it won, and that task's difficulty (Figure 8), from the
-    plan the team made: the history the robots said, their energy and start, the agent's place 0."""
-    history = history_of({r: {"record": rec} for r, rec in first["records"].items()})
-    out = []
-    for g in first["groups"]:
-        agent, task = first["robots"][g["agent"]], g["task"]
-        f = belief(p_term(history, g["agent"]), task["difficulty"], agent["energy"], 0)
-        gap = distance(Robot(g["agent"], agent["x"], agent["y"]), Robot(task["id"], task["x"], task["y"]))
-        out.append({"B": round(efficiency(f, gap, task["difficulty"]), 4), "difficulty": task["difficulty"]})
-    return out
+    fail_group_in: int = 0
 
 
 def _one_run(trial: BenchTrial, scenario: dict[str, Any], seed: int, folder: Path,
@@ -62,7 +47,31 @@ def _one_run(trial: BenchTrial, scenario: dict[str, Any], seed: int, folder: Pat
     if line.first:
         out["groups"] = group_abilities(line.first)
         out["agents"] = [g["agent"] for g in line.first["groups"]]
+    alive = sorted(r for r in line.outcomes if r not in line.failed)
+    if alive:
+        out["outcomes"] = line.outcomes[alive[0]]
     return out
+
+
+def group_failure(trial: BenchTrial, scenario: dict[str, Any], seed: int, folder: Path,
+                  params: dict[str, Any]) -> list[dict[str, Any]]:
+    """Every robot of the group that wins the second hardest task (`ability.failing_group`) failing
+    `HELP_AT` of the way from grouped to enclosed. Which group and when come from a run of the same
+    seed without the failure (the failure run repeats it exactly up to then), on a copy of the
+    history: the file is as it was afterwards."""
+    history = Path(params["history"]) if params.get("history") else None
+    kept = history.read_bytes() if history and history.exists() else None
+    dry = _one_run(trial, scenario, seed, folder, params)
+    if history:
+        if kept is None:
+            history.unlink(missing_ok=True)
+        else:
+            history.write_bytes(kept)
+    if not dry.get("groups") or not math.isfinite(dry["enclosed"]):
+        return []
+    at = round(dry["grouped"] + HELP_AT * (dry["enclosed"] - dry["grouped"]), 2)
+    members = dry["groups"][failing_group(dry["groups"])]["members"]
+    return [{"robot": m, "at": at, "reason": "bench: its whole group fails"} for m in members]
 
 
 def run_bench_trial(trial: BenchTrial) -> dict[str, Any]:
@@ -78,8 +87,9 @@ def run_bench_trial(trial: BenchTrial) -> dict[str, Any]:
         runs = []
         for k in range(trial.runs):
             scenario = dict(trial.scenario)
-            if trial.failures and trial.fail_in_run in (0, k + 1):
-                scenario["failures"] = [*scenario.get("failures", []), *trial.failures]
+            if trial.fail_group_in == k + 1:
+                failing = group_failure(trial, scenario, trial.seed + k, folder, params)
+                scenario["failures"] = [*scenario.get("failures", []), *failing]
             runs.append(_one_run(trial, scenario, trial.seed + k, folder, params))
     head = {"experiment": trial.experiment, "x": trial.x, "seed": trial.seed}
     return {**head, **runs[0]} if trial.runs == 1 else {**head, "runs": runs}
