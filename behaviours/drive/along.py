@@ -47,3 +47,10 @@ def go_along(ctx: Context, *, points: list[Any], tolerance: float = 0.3, last: f
         return Outcome("arrived", x=round(here[0], 6), y=round(here[1], 6))
     finally:
         robot.stop()
+
+
+@primitive(outcomes=["read"], outputs=["pose"], world="sim")
+def odometry_pose(ctx: Context) -> Outcome:
+    """Where the robot is by its odometry now, {x, y: metres, yaw: degrees} (as in.pose)."""
+    x, y, yaw = ctx.robot.odometry()
+    return Outcome("read", pose={"x": round(x, 4), "y": round(y, 4), "yaw": round(math.degrees(yaw), 2)})
