@@ -44,8 +44,8 @@ SIM_INPUTS: Mapping[str, InputSpec] = {
             "pose",
             "dict",
             "odometry, {x: metres, y: metres, yaw: degrees, left positive}: in the robot's own start "
-            "frame (full body), or in the room's frame from the start pose the scenario tells it "
-            "(light body)",
+            "frame (full body), or in the room's frame from the start pose the scenario tells it, "
+            "corrected against the room's walls by the robot's laser scans (light body)",
         ),
         InputSpec(
             "radio_delay",

@@ -14,14 +14,23 @@ from importlib.resources.abc import Traversable
 
 from hfsm.declarations import loads
 from hfsm.primitive import Primitive
-from hfsm.registry import Registry
+from hfsm.registry import Problem, Registry
 
 DECLARATIONS = "primitives.json"
 
 
 def register(registry: Registry) -> None:
-    """Add this package's primitives to a registry, from their declarations."""
+    """Add this package's primitives to a registry, from their declarations, and the check of the
+    `history` param (TARARC's history file, `hfsm-run --history FILE`)."""
     registry.add(*loads(files("behaviours").joinpath(DECLARATIONS).read_text(encoding="utf-8")))
+    registry.check_param("history", history_problems)
+
+
+def history_problems(value: object) -> list[Problem]:
+    """Every problem of the history file `value` names, before a run (`history_file.problems`)."""
+    from behaviours.tararc.history_file import problems  # pure, no simulator; only when a history is given
+
+    return problems(value)
 
 
 def machines() -> Traversable:

@@ -12,6 +12,7 @@ from typing import Any
 
 import numpy as np
 
+from behaviours.drive.localise import Localised
 from sim import Robot
 from sim.light import LightRobot
 from sim.perception import Blob, blob_ground, find_robots, find_table, pixel_bearing, see_tables
@@ -28,7 +29,7 @@ LIGHT_BLIND = ("table_in_view", "table_bearing", "table_distance", "tables_in_vi
 class Senses:
     """One robot's inputs at one tick (a new tick starts afresh)."""
 
-    def __init__(self, robot: Robot | LightRobot, own_colour: int,
+    def __init__(self, robot: Robot | LightRobot | Localised, own_colour: int,
                  tasks: list[dict[str, Any]] | None = None, told: dict[str, Any] | None = None) -> None:
         self.own_colour = own_colour  # the index of its own body colour: it never sees itself
         self.tasks = tasks or []
@@ -42,7 +43,7 @@ class Senses:
             "start": lambda: (told or {}).get("start"),
             "room": lambda: (told or {}).get("room"),
         }
-        if isinstance(robot, LightRobot):  # no cameras, no hands: what they would sense is null
+        if isinstance(robot, LightRobot | Localised):  # no cameras, no hands: what they would sense is null
             self.readers.update(dict.fromkeys(LIGHT_BLIND, lambda: None), holding=lambda: False)
             return
         self.robot = robot
@@ -95,6 +96,6 @@ class Senses:
         return any(b.found for i, b in enumerate(blobs) if i != self.own_colour)
 
     @staticmethod
-    def pose(robot: Robot | LightRobot) -> dict[str, float]:
+    def pose(robot: Robot | LightRobot | Localised) -> dict[str, float]:
         x, y, yaw = robot.odometry()
         return {"x": round(float(x), 6), "y": round(float(y), 6), "yaw": _degrees(yaw)}

@@ -12,6 +12,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
+from behaviours.drive.localise import SCAN_EVERY, Localised
 from behaviours.inputs import SIM_INPUTS
 from behaviours.senses import Senses
 from hfsm import located
@@ -21,6 +22,7 @@ from hfsm.runtime.program import span_ticks
 from hfsm.world import InputSpec
 from hfsm.yamlio import read_mapping
 from sim import Scenario, World, resolve
+from sim.light import LightRobot
 from sim.recorder import Recorder
 from sim.team import AnyRobot
 
@@ -90,6 +92,11 @@ class SimWorld:
         self._failures = world.scenario.failure_times(world.seed)
         truth = world.truth
         self._table_starts = [truth.table_pose(i)[:2] for i in range(len(truth.tables))]
+        room = (world.scenario.room.width, world.scenario.room.depth)
+        # Light robots know where they are by odometry corrected against the room by their laser;
+        # the humanoids by odometry alone (their cameras see the table, not the walls' lines).
+        self._localised = {name: Localised(robot, room) for name, robot in world.robots.items()
+                           if isinstance(robot, LightRobot)}
 
     @property
     def outputs(self) -> list[Path]:
@@ -104,8 +111,8 @@ class SimWorld:
         if self._recorder is not None:
             self.world.record(self._recorder)
 
-    def handle(self, agent: str) -> AnyRobot:
-        return self.world.robots[agent]
+    def handle(self, agent: str) -> AnyRobot | Localised:
+        return self._localised.get(agent) or self.world.robots[agent]
 
     def inputs(self) -> Mapping[str, InputSpec]:
         return SIM_INPUTS
@@ -119,7 +126,7 @@ class SimWorld:
             scenario = self.world.scenario
             told = {"start": scenario.told_start(agent),
                     "room": {"width": scenario.room.width, "depth": scenario.room.depth}}
-            senses = self._senses[agent] = Senses(self.world.robots[agent], own, scenario.tasks(), told)
+            senses = self._senses[agent] = Senses(self.handle(agent), own, scenario.tasks(), told)
         return senses.read(name, tick)
 
     def post(self, message: Message) -> None:
@@ -138,6 +145,10 @@ class SimWorld:
         # To the exact time of the next tick, so that a dt that is not a whole number of physics
         # steps does not drift: the world rounds the end of each span to a physics step.
         self.world.advance((tick + 1) * self.dt - self.world.time)
+        if tick % max(1, round(SCAN_EVERY / self.dt)) == 0:
+            for localised in self._localised.values():
+                if not localised.body.failed:
+                    localised.update()
         if self.progress_every and self.world.time + 1e-9 >= self._next_progress:
             self._next_progress += self.progress_every
             self._progress()

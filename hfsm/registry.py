@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -12,15 +12,29 @@ from hfsm.primitive import Primitive
 GROUP = "hfsm.primitives"
 MACHINES_GROUP = "hfsm.machines"  # an entry point `module:function` returns a folder of machine files
 
+Problem = tuple[str, int, int, str]
+"""(file, line, column, message): a problem in a file a param names, 1-based."""
+ParamCheck = Callable[[Any], list[Problem]]
+"""A check of a value given to the top machine's param of that name, run before anything runs
+(`hfsm-run`, `--check` too): e.g. the `history` file of TARARC's machines must be readable."""
+
 
 class Registry:
-    """Primitives by name. A plug-in's entry point is a function `register(registry)`."""
+    """Primitives by name, and checks of the top machine's params by name (`check_param`). A
+    plug-in's entry point is a function `register(registry)`."""
 
     def __init__(self, primitives: Iterable[Primitive] = ()) -> None:
         self._by_name: dict[str, Primitive] = {}
         self.elsewhere: dict[str, str] = {}  # primitives left out: name -> the world they need
         self.machine_folders: list[Path] = []  # plug-ins' machines, searched after --lib folders
+        self.param_checks: dict[str, ParamCheck] = {}
         self.add(*primitives)
+
+    def check_param(self, name: str, check: ParamCheck) -> None:
+        """Check the value of the top machine's param `name` before a run (one check per name)."""
+        if name in self.param_checks:
+            raise ValueError(f"param '{name}' has a check already")
+        self.param_checks[name] = check
 
     def add(self, *primitives: Primitive) -> None:
         for prim in primitives:
@@ -45,6 +59,7 @@ class Registry:
         kept = Registry(p for p in self if p.spec.world in (None, world))
         kept.elsewhere = {p.spec.name: str(p.spec.world) for p in self if p.spec.world not in (None, world)}
         kept.machine_folders = list(self.machine_folders)
+        kept.param_checks = dict(self.param_checks)
         return kept
 
     @classmethod
@@ -58,6 +73,7 @@ class Registry:
             if not ok:
                 continue
             taken = [p.spec.name for p in staging if p.spec.name in registry]
+            taken += [f"a check of param '{n}'" for n in staging.param_checks if n in registry.param_checks]
             if taken:
                 owner = owners[taken[0]]
                 plugins.warn(
@@ -67,7 +83,9 @@ class Registry:
                 )
                 continue
             registry.add(*staging)
+            registry.param_checks.update(staging.param_checks)
             owners.update((p.spec.name, ep.name) for p in staging)
+            owners.update((f"a check of param '{n}'", ep.name) for n in staging.param_checks)
         for ep, folder_of in plugins.load_each(MACHINES_GROUP, _callable_problem):
             ok, folder = plugins.run_hook(ep, folder_of)
             if ok:

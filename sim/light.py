@@ -1,9 +1,9 @@
 """Light robots: a camera-less cylinder (drawn as boxes) that drives by velocity commands, for
 teams of tens (the TARARC allocation experiments). No head, no arms, no cameras: it senses its
 odometry (in the room's frame, from the start pose the scenario tells it), its battery and bumps,
-hears the radio, and has a proximity sensor (`nearby`), as the paper's Player/Stage robots have
-lasers, to steer round what is near. It collides with walls, tables and other robots like the
-humanoid does."""
+hears the radio, has a proximity sensor (`nearby`), as the paper's Player/Stage robots have
+lasers, to steer round what is near, and a laser range finder (`scan`) to see the walls by. It
+collides with walls, tables and other robots like the humanoid does."""
 
 from __future__ import annotations
 
@@ -29,6 +29,8 @@ class LightGeometry:
 
 LIGHT_BODY = LightGeometry()
 FLOOR_TOP = 0.05  # a body whose bounding box ends below this height is the floor
+SCAN_HEIGHT = 0.2  # metres above the floor the range finder's beams sweep
+SCAN_NOISE = 0.01  # metres, 1 sigma, on each range (a Hokuyo's is ~1-3 cm)
 LIGHT_MOTION = MotionProfile(forward_max=0.5, backward_max=0.5, sideways_max=0.5, turn_max=2.0)
 
 
@@ -72,6 +74,7 @@ class LightRobot(Base):
     def __init__(self, cid: int, name: str, chassis: Chassis, motion: MotionProfile,
                  rng: np.random.Generator, told_start: Pose, battery: Battery | None = None) -> None:
         super().__init__(cid, name, chassis, motion, rng, battery, told_start)
+        self._scan_rng = np.random.default_rng(rng.integers(2**32))
 
     def holding(self) -> bool:
         """A light body has no hands."""
@@ -98,6 +101,27 @@ class LightRobot(Base):
                 found.append((nearest[8], nearest[6][0] - x, nearest[6][1] - y))
         c, s = math.cos(yaw), math.sin(yaw)
         return [(c * dx + s * dy, -s * dx + c * dy) for _, dx, dy in sorted(found)]
+
+    def scan(self, beams: int, reach: float) -> list[float]:
+        """A laser range finder sweeping the full turn at `SCAN_HEIGHT`: `beams` ranges in metres from
+        the body's centre, beam k at k/beams of a turn counter-clockwise from straight ahead, each
+        with seeded noise; `reach` where a beam hits nothing within `reach`. It sees walls, tables'
+        legs and other robots alike (ray casts against the world). A failed body senses nothing."""
+        if self.failed or beams <= 0:
+            return []
+        x, y, yaw = self._true_pose()
+        inner = LIGHT_BODY.radius + 0.01
+        starts, ends = [], []
+        for k in range(beams):
+            c, s = math.cos(yaw + 2 * math.pi * k / beams), math.sin(yaw + 2 * math.pi * k / beams)
+            starts.append([x + c * inner, y + s * inner, SCAN_HEIGHT])
+            ends.append([x + c * reach, y + s * reach, SCAN_HEIGHT])
+        hits = p.rayTestBatch(starts, ends, physicsClientId=self._cid)
+        noise = self._scan_rng.normal(0.0, SCAN_NOISE, beams)
+        out = []
+        for (body, _link, fraction, _pos, _normal), e in zip(hits, noise, strict=True):
+            out.append(reach if body < 0 else round(min(reach, inner + fraction * (reach - inner) + e), 4))
+        return out
 
     # Teams of tens: the leash is kept once per control tick, not every physics step (one pybullet
     # call a step instead of two), so a blocked light robot may lead its body by a tick's travel.

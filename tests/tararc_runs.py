@@ -14,6 +14,7 @@ from hfsm.testing.check import read_test_file
 from hfsm.testing.plan import CasePlan
 from hfsm.testing.standins import program_for
 from hfsm.testing.world import ScriptedWorld
+from hfsm.trace import TraceSink
 
 MACHINES = Path(__file__).resolve().parent / "machines"
 
@@ -42,15 +43,17 @@ def case(file: str, name: str) -> CasePlan:
     raise KeyError(name)
 
 
-def run_plan(plan: CasePlan, loss: float = 0.0, seed: int = 0, **params: Any) -> tuple[RunResult, int]:
-    """The case's run (stand-ins, inputs, messages, failures as in its file); (result, messages lost)."""
+def run_plan(plan: CasePlan, loss: float = 0.0, seed: int = 0, trace: TraceSink | None = None,
+             **params: Any) -> tuple[RunResult, int]:
+    """The case's run (stand-ins, inputs, messages, failures as in its file); (result, messages lost).
+    `trace`: a sink for the run's trace records."""
     plan = replace(plan, params={**plan.params, **params})
     program, _ = program_for(plan)
     world = LossyWorld(plan, loss, seed)
     failing = [Failure(f.agent, f.at, f.reason) for f in plan.fail]
     options = RunOptions(plan.top, plan.agents, plan.params, plan.seed, plan.max_time, failing)
     try:
-        result = run(program, world, options)
+        result = run(program, world, options, trace)
     finally:
         world.close()
     assert result.error is None, result.error

@@ -31,6 +31,7 @@ from typing import Any
 
 from behaviours.room.claims import claim_walls
 from behaviours.room.frames import difficulty_of
+from behaviours.room.stations import room_ties
 from behaviours.tararc.formulas import PAPER, Coefficients
 from behaviours.tararc.plan import Plan, after_losses, make_plan
 
@@ -53,12 +54,13 @@ def tables_of(tasks: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
 
 def make_room_plan(states: Mapping[str, Mapping[str, Any]], tasks: Sequence[Mapping[str, Any]],
                    room: Mapping[str, Any], coeff: Coefficients = PAPER, reach: float = 0.5) -> Plan:
-    """TARARC's steps 2-5 with one group per table, every table's claimed wall, and every robot's
-    colour as it said it (-1: not said), for a robot to look for its partner."""
+    """TARARC's steps 2-5 with one group per table (relevance ties by the robots' stations,
+    `stations.room_ties`), every table's claimed wall, and every robot's colour as it said it (-1:
+    not said), for a robot to look for its partner."""
     tables = tables_of(tasks)
     if len(states) < PAIR * len(tables):
         raise ValueError(f"{len(states)} robots cannot make {len(tables)} pairs")
-    plan = make_plan(states, tables, coeff)
+    plan = make_plan(states, tables, coeff, room_ties(states, tables))
     ways = claim_walls(tables, float(room["width"]), float(room["depth"]), reach)
     plan["tables"] = {t["id"]: {**t, "toward": list(ways[t["id"]].toward)} for t in tables}
     plan["colours"] = {r: int(s.get("colour", -1)) for r, s in sorted(states.items())}
@@ -71,10 +73,11 @@ def _where(plan: Plan, robot: str) -> tuple[float, float]:
 
 
 def groups_after(plan: Plan, lost: Sequence[str], done: Sequence[str]) -> list[dict[str, Any]]:
-    """Step 7 (TARARC's 7a and 7b, `after_losses`), then a group left short of a pair with its table
+    """Step 7 (TARARC's 7a and 7b, `after_losses`: a group gives only robots beyond its pair, its
+    agent and assistant carry on), then a group left short of a pair with its table
     not done borrows the robots of the groups whose tables are done, nearest its agent (or table)
     first, ties by id; the first borrowed of a group with no robot left becomes its agent."""
-    groups = [dict(g) for g in after_losses(plan, lost, PAIR)["groups"]]
+    groups = [dict(g) for g in after_losses(plan, lost, PAIR, keep=PAIR)["groups"]]
     finished = set(done)
     for needy in groups:
         if needy["task"]["id"] in finished:

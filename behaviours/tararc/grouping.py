@@ -18,6 +18,17 @@ BeliefOf = Callable[[str, int], float]
 """F of a robot at a given place (j_ord) in its group."""
 
 
+@dataclass(frozen=True)
+class Ties:
+    """How step 2 breaks ties of relevance before the id (robots with no history all tie): `seed`
+    ranks robots of equal row sums to seed a group (smaller first), `partner(seed, robot)` ranks
+    robots of equal relevance to the seed (smaller first). Both must be pure functions of what every
+    robot knows (positions said in the broadcast, the task list), so that every robot agrees."""
+
+    seed: Callable[[str], float]
+    partner: Callable[[str, str], tuple[float, ...]]
+
+
 def pair(a: str, b: str) -> Pair:
     """The key of an unordered pair: R is symmetric (R_ij = R_ji)."""
     return (a, b) if a <= b else (b, a)
@@ -62,20 +73,28 @@ def row_sum(robot: str, others: Iterable[str], rel: Relevance) -> float:
 
 
 def greedy_groups(
-    ids: Iterable[str], n_groups: int, rel: Relevance
+    ids: Iterable[str], n_groups: int, rel: Relevance, ties: Ties | None = None
 ) -> tuple[list[tuple[str, ...]], list[str]]:
     """Step 2: N_g groups of n robots each, and the x robots left over.
 
     The ungrouped robot with the largest row sum of R (over ungrouped robots: the relevance of
     grouped ones is zeroed) seeds a group and takes its n-1 most relevant ungrouped partners.
+    Ties go by `ties` (if given), then by id.
     """
     pool = sorted(set(ids))
     n, _ = group_size(len(pool), n_groups)
     groups: list[tuple[str, ...]] = []
+
+    def seed_key(r: str) -> tuple[float, float, str]:
+        return (-row_sum(r, pool, rel), ties.seed(r) if ties else 0.0, r)
+
+    def partner_key(seed: str, r: str) -> tuple[float, tuple[float, ...], str]:
+        return (-rel.get(pair(seed, r), 0.0), ties.partner(seed, r) if ties else (), r)
+
     for _ in range(n_groups):
-        seed = min(pool, key=lambda r: (-row_sum(r, pool, rel), r))
+        seed = min(pool, key=seed_key)
         rest = [r for r in pool if r != seed]
-        partners = sorted(rest, key=lambda r: (-rel.get(pair(seed, r), 0.0), r))[: n - 1]
+        partners = sorted(rest, key=lambda r: partner_key(seed, r))[: n - 1]
         groups.append((seed, *partners))
         taken = {seed, *partners}
         pool = [r for r in pool if r not in taken]
@@ -110,14 +129,16 @@ def place_leftovers(
     return out
 
 
-def form_groups(robots: Iterable[Robot], n_groups: int, rel: Relevance, belief_of: BeliefOf) -> list[Group]:
-    """Steps 2-4 together: greedy groups, elected agents, leftovers matched by distance to agents."""
+def form_groups(robots: Iterable[Robot], n_groups: int, rel: Relevance, belief_of: BeliefOf,
+                ties: Ties | None = None) -> list[Group]:
+    """Steps 2-4 together: greedy groups (relevance ties by `ties`, then id), elected agents,
+    leftovers matched by distance to agents."""
     by_id: dict[str, Robot] = {}
     for robot in robots:
         if robot.id in by_id:
             raise ValueError(f"robot id {robot.id!r} appears twice")
         by_id[robot.id] = robot
-    cores, leftovers = greedy_groups(by_id, n_groups, rel)
+    cores, leftovers = greedy_groups(by_id, n_groups, rel, ties)
     elected = [Group(elect(core, belief_of), core) for core in cores]
     return place_leftovers(elected, leftovers, by_id)
 

@@ -43,16 +43,21 @@ class Transfer:
     taker: int
 
 
-def lend(groups: Sequence[Group], needy: int, n_thres: int, robots: Mapping[str, Robot]) -> list[Transfer]:
+def lend(groups: Sequence[Group], needy: int, n_thres: int, robots: Mapping[str, Robot],
+         keep: int = 1) -> list[Transfer]:
     """7b: while group `needy` has fewer than n_thres robots, the other groups, nearest agent first
     (distance between agents, ties by group index), each give one member in turn.
 
     A giver gives the non-agent member nearest the needy agent (ties by id) and never drops below
-    n_thres itself (the paper does not say; otherwise help would only move the shortage). Returns
-    the transfers in order; fewer than needed when no group can spare a robot.
+    n_thres itself (the paper does not say; otherwise help would only move the shortage). With
+    `keep` > 1 it also keeps its first keep - 1 members besides its agent (a room's pair at work
+    lends only its spares). Returns the transfers in order; fewer than needed when no group can
+    spare a robot.
     """
     if n_thres < 1:
         raise ValueError(f"n_thres must be >= 1, got {n_thres}")
+    if keep < 1:
+        raise ValueError(f"keep must be >= 1, got {keep}")
     sizes = [len(g.members) for g in groups]
     given: list[set[str]] = [set() for _ in groups]
     target = robots[groups[needy].agent]
@@ -66,7 +71,8 @@ def lend(groups: Sequence[Group], needy: int, n_thres: int, robots: Mapping[str,
         for i in givers:
             if sizes[needy] >= n_thres:
                 break
-            spare = [m for m in groups[i].members if m != groups[i].agent and m not in given[i]]
+            others = [m for m in groups[i].members if m != groups[i].agent]
+            spare = [m for m in others[keep - 1:] if m not in given[i]]
             if sizes[i] <= n_thres or not spare:
                 continue
             member = min(spare, key=lambda m: (distance(robots[m], target), m))

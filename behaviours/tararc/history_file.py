@@ -29,12 +29,17 @@ VERSION = 1
 T = TypeVar("T")
 
 
-class HistoryError(ValueError):
-    """A bad history file: `errors` are `FILE:LINE:COL: message` lines, all of them."""
+Problem = tuple[str, int, int, str]
+"""(file, line, column, message), 1-based."""
 
-    def __init__(self, errors: list[str]) -> None:
-        super().__init__("\n".join(errors))
-        self.errors = errors
+
+class HistoryError(ValueError):
+    """A bad history file: `problems` are every one of them, `errors` the same as `FILE:LINE:COL: message`."""
+
+    def __init__(self, problems: list[Problem]) -> None:
+        self.problems = problems
+        self.errors = [f"{file}:{line}:{col}: {message}" for file, line, col, message in problems]
+        super().__init__("\n".join(self.errors))
 
 
 def dumps(history: History) -> str:
@@ -55,22 +60,49 @@ def _robot_entry(robot: str, history: History) -> dict[str, object]:
 
 
 def save(path: Path, history: History) -> None:
-    """Write atomically: a reader (or a run stopped mid-write) sees the old file or the new one."""
+    """Write atomically: a reader (or a run stopped mid-write, or a crash) sees the old file or the
+    new one, never part of one. The new file is written in full to a temporary file in the same
+    folder, flushed to the disk, then renamed over the old (os.replace is atomic on one file system);
+    it keeps the old file's permissions (a new one gets 0o644)."""
+    mode = path.stat().st_mode & 0o777 if path.exists() else 0o644
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as out:
             out.write(dumps(history))
+            out.flush()
+            os.fsync(out.fileno())
+        os.chmod(tmp, mode)
         os.replace(tmp, path)
     except BaseException:
         os.unlink(tmp)
         raise
 
 
+def problems(value: object) -> list[Problem]:
+    """What is wrong with `value` as the `history` param, before a run: nothing for "" (no history)
+    or a file not there yet (the first run: it is written at the end) if its folder exists; else
+    every problem of the file as `load` finds them."""
+    if not isinstance(value, str) or not value:
+        return []
+    path = Path(value)
+    if not path.exists():
+        folder = path.parent
+        if not folder.is_dir():
+            return [(value, 1, 1, f"the history is written at the end of the run, but folder '{folder}' "
+                     "does not exist")]
+        return []
+    try:
+        load(path)
+    except HistoryError as err:
+        return err.problems
+    return []
+
+
 def load(path: Path) -> History:
     try:
         text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
-        raise HistoryError([f"{path}:1:1: cannot read the history file: {exc}"]) from None
+        raise HistoryError([(str(path), 1, 1, f"cannot read the history file: {exc}")]) from None
     return loads(text, str(path))
 
 
@@ -80,21 +112,27 @@ def loads(text: str, file: str = "<history>") -> History:
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
-        raise HistoryError([f"{file}:{line}:{col}: not valid JSON: {exc.problem or exc.context}"]) from None
+        raise HistoryError([(file, line, col, f"not valid JSON: {exc.problem or exc.context}")]) from None
+    except yaml.reader.ReaderError as exc:  # a character YAML (and JSON) does not allow
+        before = text[: exc.position]
+        line, col = before.count("\n") + 1, exc.position - (before.rfind("\n") + 1) + 1
+        code = exc.character if isinstance(exc.character, int) else ord(exc.character)
+        message = f"not valid JSON: character U+{code:04X} not allowed"
+        raise HistoryError([(file, line, col, message)]) from None
     reader = _Reader(file)
     history = reader.document(root)
     if reader.errors or history is None:
-        raise HistoryError(reader.errors or [f"{file}:1:1: the history file is empty"])
+        raise HistoryError(reader.errors or [(file, 1, 1, "the history file is empty")])
     return history
 
 
 class _Reader:
     def __init__(self, file: str) -> None:
         self.file = file
-        self.errors: list[str] = []
+        self.errors: list[Problem] = []
 
     def error(self, node: yaml.Node, message: str) -> None:
-        self.errors.append(f"{self.file}:{node.start_mark.line + 1}:{node.start_mark.column + 1}: {message}")
+        self.errors.append((self.file, node.start_mark.line + 1, node.start_mark.column + 1, message))
 
     def document(self, root: yaml.Node | None) -> History | None:
         if root is None:

@@ -24,7 +24,7 @@ from typing import Any
 from behaviours.tararc.allocation import Task
 from behaviours.tararc.formation import enclose, form_places
 from behaviours.tararc.formulas import PAPER, Coefficients
-from behaviours.tararc.grouping import Group, Robot
+from behaviours.tararc.grouping import Group, Robot, Ties
 from behaviours.tararc.help import apply_transfers, hand_over, lend
 from behaviours.tararc.history import History, Record
 from behaviours.tararc.team import allocate
@@ -69,13 +69,15 @@ def task_of(entry: Mapping[str, Any], priority: int) -> Task:
 
 
 def make_plan(
-    states: Mapping[str, Mapping[str, Any]], tasks: Sequence[Mapping[str, Any]], coeff: Coefficients = PAPER
+    states: Mapping[str, Mapping[str, Any]], tasks: Sequence[Mapping[str, Any]], coeff: Coefficients = PAPER,
+    ties: Ties | None = None,
 ) -> Plan:
-    """Steps 2-5 from the states every robot heard: groups, agents, tasks won by the agents."""
+    """Steps 2-5 from the states every robot heard: groups (relevance ties by `ties`, then id),
+    agents, tasks won by the agents."""
     robots = [Robot(r, float(s["x"]), float(s["y"])) for r, s in sorted(states.items())]
     task_list = [task_of(t, i) for i, t in enumerate(tasks)]
     energy = {r: float(s["energy"]) for r, s in states.items()}
-    done = allocate(robots, task_list, history_of(states), energy, coeff)
+    done = allocate(robots, task_list, history_of(states), energy, coeff, ties)
     by_id = {t.id: t for t in task_list}
     won = {g: by_id[t] for t, g in done.tasks}
     groups = []
@@ -91,9 +93,10 @@ def make_plan(
     }
 
 
-def after_losses(plan: Plan, lost: Sequence[str], n_thres: int) -> Plan:
+def after_losses(plan: Plan, lost: Sequence[str], n_thres: int, keep: int = 1) -> Plan:
     """Step 7 for every robot lost, in id order: 7a when it was an agent (the member with the
-    highest F takes over), then 7b for every group left with fewer than n_thres robots."""
+    highest F takes over), then 7b for every group left with fewer than n_thres robots (a giver
+    keeps its first `keep` members, `help.lend`)."""
     groups: list[Group | None] = [Group(g["agent"], tuple(g["members"])) if g["members"] else None
                                   for g in plan["groups"]]
     for robot in sorted(set(lost)):
@@ -111,7 +114,7 @@ def after_losses(plan: Plan, lost: Sequence[str], n_thres: int) -> Plan:
         if needy not in live:
             continue
         kept = [g for g in groups if g is not None]
-        moved = lend(kept, live.index(needy), n_thres, where)
+        moved = lend(kept, live.index(needy), n_thres, where, keep)
         for i, g in zip(live, apply_transfers(kept, moved), strict=True):
             groups[i] = g
     out = []

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 from behaviours.tararc.allocation import Task, compete
 from behaviours.tararc.formulas import PAPER, Coefficients, belief, election_difficulty
-from behaviours.tararc.grouping import Group, Robot, form_groups, group_of
+from behaviours.tararc.grouping import Group, Robot, Ties, form_groups, group_of
 from behaviours.tararc.history import History, p_term, relevance_matrix
 
 
@@ -27,8 +27,10 @@ def allocate(
     history: History,
     energy: Mapping[str, float],
     coeff: Coefficients = PAPER,
+    ties: Ties | None = None,
 ) -> Allocation:
-    """One group per task (N_g = number of tasks), agents elected, tasks auctioned among agents."""
+    """One group per task (N_g = number of tasks), agents elected, tasks auctioned among agents;
+    relevance ties in the grouping broken by `ties` (then id)."""
     if not tasks:
         raise ValueError("no tasks to allocate")
     ids = [r.id for r in robots]
@@ -37,7 +39,8 @@ def allocate(
     def f(robot: str, order: int, difficulty: float) -> float:
         return belief(p_term(history, robot), difficulty, energy[robot], order, coeff)
 
-    groups = form_groups(robots, len(tasks), relevance_matrix(history, ids), lambda r, o: f(r, o, d_mean))
+    rel = relevance_matrix(history, ids)
+    groups = form_groups(robots, len(tasks), rel, lambda r, o: f(r, o, d_mean), ties)
     by_id = {r.id: r for r in robots}
     agents = [by_id[g.agent] for g in groups]
 

@@ -6,15 +6,16 @@ run in every world, `none` included. Moving to a place is the world's (`go_to`).
 
 from __future__ import annotations
 
+from behaviours.teamwork.exchange import tararc_exchange
 from behaviours.teamwork.memory import tararc_recall, tararc_remember
 from behaviours.teamwork.plans import tararc_allocate, tararc_help
-from behaviours.teamwork.radio import partner_silent, tararc_gather, tararc_watch
+from behaviours.teamwork.radio import partner_silent, tararc_watch
 from behaviours.teamwork.room import room_allocate, room_assign, room_locate, room_relocalise, room_watch
 from hfsm.primitive import Primitive
 
 PRIMITIVES: tuple[Primitive, ...] = (
     tararc_recall,
-    tararc_gather,
+    tararc_exchange,
     tararc_allocate,
     tararc_watch,
     tararc_help,

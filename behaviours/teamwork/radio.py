@@ -8,26 +8,6 @@ from hfsm.primitive import Context, Outcome, primitive
 from hfsm.runtime.program import span_ticks
 
 
-@primitive(outcomes=["heard"], outputs=["heard", "team"])
-def tararc_gather(ctx: Context, *, message: str, team: list[Any], silence: float = 0.0) -> Outcome:
-    """Wait until every robot of `team` (but this one) has said `message` (as `say` sends it) or,
-    when `silence` > 0, until `silence` seconds have passed: a teammate not heard by then failed
-    before it could say it, and the team goes on without it. Outputs the data of each robot heard,
-    by sender, and `team`, the ids heard. Copies from robots outside the team are read and dropped."""
-    wanted = {str(r) for r in team} - {ctx.agent}
-    heard: dict[str, Any] = {}
-    start, quiet = ctx.tick, span_ticks(silence, ctx.dt) if silence > 0 else None
-
-    def drain() -> bool:
-        while (m := ctx.receive(message)) is not None:
-            if m.sender in wanted:
-                heard[m.sender] = m.data.get("data", {})
-        return wanted <= heard.keys() or (quiet is not None and ctx.tick - start >= quiet)
-
-    ctx.wait_until(drain)
-    return Outcome("heard", heard=dict(sorted(heard.items())), team=sorted(heard))
-
-
 @primitive(outcomes=["changed"], outputs=["lost"])
 def tararc_watch(
     ctx: Context, *, team: list[Any], lost: list[Any], silence: float = 5.0, message: str = "tararc_alive"

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
 from hfsm.errors import Finding, UsageError, UserError
@@ -33,9 +34,15 @@ class _Problems:
 
 
 def parse_params(
-    pairs: list[str], machine: Machine, name: str, doc: Document | None = None
+    pairs: list[str],
+    machine: Machine,
+    name: str,
+    doc: Document | None = None,
+    preset: Mapping[str, Any] | None = None,
 ) -> dict[str, Any]:
-    given: dict[str, Any] = {}
+    """The top machine's params from `--param K=V` pairs, and `preset` values given by other flags
+    (already checked), every problem at once."""
+    given: dict[str, Any] = dict(preset or {})
     problems = _Problems(doc)
     tried: set[str] = set()  # a param given wrongly is reported as such, not also as missing
     for pair in pairs:

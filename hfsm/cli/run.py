@@ -11,7 +11,7 @@ from pathlib import Path
 from hfsm import plugins
 from hfsm.cli import guard, report
 from hfsm.cli.fail import check_failures, fail_arg
-from hfsm.cli.params import parse_params
+from hfsm.cli.history import top_params
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import UsageError, UserError
 from hfsm.load import Loaded, load, worlds_needed
@@ -40,6 +40,13 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     p.add_argument("--world", choices=["none", *factories], help="default: sim if a primitive needs it")
     p.add_argument("--agents", help="comma-separated agent names (default: the world's, else 'robot')")
     p.add_argument("--param", action="append", default=[], metavar="K=V", help="a param of the top machine")
+    p.add_argument(
+        "--history",
+        type=Path,
+        metavar="FILE",
+        help="the top machine's 'history' param: the team's history, read at the start (none yet if "
+        "FILE is missing) and written at the end",
+    )
     p.add_argument("--seed", type=guard.SEED, default=0)
     p.add_argument("--dt", type=guard.DT, default=0.05, help="seconds per tick, 0.001..10 (default 0.05)")
     p.add_argument("--max-time", type=guard.MAX_TIME, default=3600.0, metavar="S", help="default 3600")
@@ -117,11 +124,11 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
     report.findings(loaded.warnings)
     top = loaded.roots[0]
     if args.check:
-        if args.param:  # the params given are checked too
-            parse_params(args.param, top.model, top.name, top.doc)
+        if args.param or args.history:  # the params given are checked too
+            top_params(args.param, args.history, top, registry)
         print(f"{args.file}: ok ({len(loaded.machines)} machines checked)", file=sys.stderr)
         return 0
-    params = parse_params(args.param, top.model, top.name, top.doc)
+    params = top_params(args.param, args.history, top, registry)
     world = _world(args, loaded, registry, factories)
     started = False
     try:

@@ -47,7 +47,7 @@ def test_ten_light_robots_allocate_three_targets_and_remember(
     capsys: pytest.CaptureFixture[str], tmp_path: Path
 ) -> None:
     history = tmp_path / "history.json"
-    result = run(capsys, tmp_path, "--scenario", "alloc_3_tasks", "--param", f"history={history}")
+    result = run(capsys, tmp_path, "--scenario", "alloc_3_tasks", "--history", history)
     agents = result["agents"]
     assert {a["outcome"] for a in agents.values()} == {"done"}
     plans = [a["outputs"]["plan"] for a in agents.values()]

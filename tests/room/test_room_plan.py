@@ -67,20 +67,37 @@ def test_rectangles_overlap_when_turned() -> None:
 
 
 def test_the_plan_pairs_robots_and_keeps_spares() -> None:
+    # no history: every relevance ties, and the robots standing at a table pair up for it (not by id)
     plan = make_room_plan(SIX, TASKS, ROOM)
     jobs = {r: job_of(plan, r, [], [], {}) for r in SIX}
     assert {r: (j["role"], j["table"]) for r, j in jobs.items() if j} == {
-        "r1": ("leader", "table1"), "r2": ("assistant", "table1"), "r3": ("spare", "table1"),
-        "r4": ("leader", "table2"), "r5": ("assistant", "table2"), "r6": ("spare", "table2")}
+        "r1": ("leader", "table1"), "r2": ("assistant", "table1"), "r5": ("spare", "table1"),
+        "r3": ("leader", "table2"), "r4": ("assistant", "table2"), "r6": ("spare", "table2")}
     assert jobs["r1"]["channel"] == jobs["r2"]["channel"] == "table1_r1_r2_"
+
+
+def test_ties_of_relevance_pair_the_robots_of_one_table_not_r1_with_r10() -> None:
+    tables = [{"id": f"table{i}", "x": 2.0 * i, "y": 0.0, "yaw": 90, "length": 0.8, "width": 0.5} for i in range(1, 6)]
+    places = {f"r{2 * i - 1}": (2.0 * i, -1.2) for i in range(1, 6)} | {f"r{2 * i}": (2.0 * i, 1.2) for i in range(1, 6)}
+    plan = make_room_plan(states(*((r, x, y) for r, (x, y) in places.items())), tables, {"width": 14.0, "depth": 6.0})
+    for r in places:
+        job = job_of(plan, r, [], [], {})
+        assert job is not None and math.dist(places[r], (job["at"][0], job["at"][1])) < 1.3
+
+
+def test_a_group_lends_its_spare_never_its_assistant_at_work() -> None:
+    # table2's group (r3, r4, r6) keeps its pair when table1's assistant and spare are lost: r6 goes
+    plan = make_room_plan(SIX, TASKS, ROOM)
+    groups = groups_after(plan, ["r2", "r5"], [])
+    assert [g["members"] for g in groups] == [["r1", "r6"], ["r3", "r4"]]
 
 
 def test_a_spare_replaces_a_lost_assistant_and_7a_a_lost_leader() -> None:
     plan = make_room_plan(SIX, TASKS, ROOM)
-    assistant_lost = {r: job_of(plan, r, ["r2"], [], {}) for r in ("r1", "r3")}
-    assert [(j["role"], j["partner"]) for j in assistant_lost.values() if j] == [("leader", "r3"), ("assistant", "r1")]
+    assistant_lost = {r: job_of(plan, r, ["r2"], [], {}) for r in ("r1", "r5")}
+    assert [(j["role"], j["partner"]) for j in assistant_lost.values() if j] == [("leader", "r5"), ("assistant", "r1")]
     leader_lost = job_of(plan, "r2", ["r1"], [], {})
-    assert leader_lost is not None and (leader_lost["role"], leader_lost["partner"]) == ("leader", "r3")
+    assert leader_lost is not None and (leader_lost["role"], leader_lost["partner"]) == ("leader", "r5")
     assert job_of(plan, "r1", ["r1"], [], {}) is None
 
 
@@ -97,7 +114,7 @@ def test_a_short_group_borrows_from_a_finished_table_and_the_table_where_it_was_
 def test_the_same_news_in_any_order_gives_the_same_jobs() -> None:
     plan = make_room_plan(SIX, TASKS, ROOM)
     for lost in itertools.permutations(["r2", "r4"]):
-        assert [g["members"] for g in groups_after(plan, list(lost), [])] == [["r1", "r3"], ["r5", "r6"]]
+        assert [g["members"] for g in groups_after(plan, list(lost), [])] == [["r1", "r5"], ["r3", "r6"]]
 
 
 def test_a_pair_tries_again_on_a_new_channel_once_both_gave_up() -> None:
@@ -134,7 +151,7 @@ def test_a_slide_ends_with_its_table_done_its_pairing_spent_or_its_survivor_lost
     plan = make_room_plan(FOUR, TASKS, ROOM)
     failed = job_of(plan, "r3", ["r2"], ["table2"], {}, [f"{FIRST}/r1"], [R1_SLIDES])
     assert failed is not None and (failed["role"], failed["partner"]) == ("assistant", "r1")  # help comes
-    spare = job_of(make_room_plan(SIX, TASKS, ROOM), "r3", ["r2"], [], {}, [], [R1_SLIDES])
+    spare = job_of(make_room_plan(SIX, TASKS, ROOM), "r5", ["r2"], [], {}, [], [R1_SLIDES])
     assert spare is not None and spare["role"] == "spare"  # the group's spare is not lent either
 
 

@@ -126,3 +126,18 @@ def test_the_proximity_sensor_finds_robots_and_walls_not_the_floor(worlds: list[
     assert seen[0] == pytest.approx((0.0, 0.45), abs=0.02)
     assert seen[1] == pytest.approx((0.0, -1.0), abs=0.02)
     assert robot.nearby(0.2) == []
+
+
+def test_the_range_finder_sees_the_walls_and_other_robots(worlds: list[World]) -> None:
+    world = make(worlds, {"r1": {"x": 1.0, "y": -1.0, "yaw": 0, "body": "light"},
+                          "r2": {"x": 1.0, "y": 1.0, "yaw": 0, "body": "light"}},
+                 jitter={"position": 0.0, "yaw": 0.0})
+    world.advance(0.05)
+    robot = world.robots["r1"]
+    assert isinstance(robot, LightRobot)
+    ranges = robot.scan(4, 20.0)  # ahead, left, behind, right in a room 8 x 8 centred on 0
+    assert ranges[0] == pytest.approx(3.0, abs=0.05)  # the wall at x = 4
+    assert ranges[1] == pytest.approx(2.0 - 0.15, abs=0.05)  # r2's side, 2 m to its left
+    assert ranges[2] == pytest.approx(5.0, abs=0.05)
+    assert ranges[3] == pytest.approx(3.0, abs=0.05)
+    assert robot.scan(4, 2.5) == [2.5, pytest.approx(1.85, abs=0.05), 2.5, 2.5]  # nothing within reach

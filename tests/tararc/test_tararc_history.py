@@ -111,3 +111,41 @@ def test_not_an_object(text: str) -> None:
 def test_an_unreadable_file(tmp_path: Path) -> None:
     with pytest.raises(HistoryError, match="cannot read"):
         load(tmp_path / "missing.json")
+
+
+def test_save_never_leaves_half_a_file(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    import os
+
+    path = tmp_path / "h.json"
+    old = record_run(History(), [("r0", "r1")], [True])
+    save(path, old)
+    before = path.read_bytes()
+
+    def crash(*_: object) -> None:
+        raise OSError("disk full")
+
+    monkeypatch.setattr(os, "replace", crash)
+    with pytest.raises(OSError, match="disk full"):
+        save(path, record_run(old, [("r0", "r1")], [False]))
+    assert path.read_bytes() == before and sorted(p.name for p in tmp_path.iterdir()) == ["h.json"]
+
+
+def test_save_keeps_the_files_permissions(tmp_path: Path) -> None:
+    path = tmp_path / "h.json"
+    save(path, History())
+    assert path.stat().st_mode & 0o777 == 0o644
+    path.chmod(0o600)
+    save(path, record_run(History(), [("r0", "r1")], [True]))
+    assert path.stat().st_mode & 0o777 == 0o600
+
+
+def test_problems_before_a_run(tmp_path: Path) -> None:
+    from behaviours.tararc.history_file import problems
+
+    assert problems("") == [] and problems(str(tmp_path / "first.json")) == []
+    assert problems(str(tmp_path / "no" / "h.json"))[0][:3] == (str(tmp_path / "no" / "h.json"), 1, 1)
+    (tmp_path / "h.json").write_text('{"version": 1, "robots": [{"id": "r0"}]}', encoding="utf-8")
+    assert problems(str(tmp_path / "h.json")) == [
+        (str(tmp_path / "h.json"), 1, 27, "missing field 'n_f'"),
+        (str(tmp_path / "h.json"), 1, 27, "missing field 'n_s'"),
+    ]

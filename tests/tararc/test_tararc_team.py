@@ -13,6 +13,7 @@ from tararc_runs import case, decisions, run_plan
 from behaviours.tararc.history import History, Record
 from behaviours.tararc.history_file import dumps, load, save
 from hfsm.runtime.run import RunResult
+from hfsm.testing.model import FailAt
 
 KEYS = ("role", "agent", "task", "lost", "outcomes")
 TEAM_CASES = [
@@ -120,3 +121,39 @@ def test_save_replaces_the_file_and_leaves_no_temporary(tmp_path: Path) -> None:
     save(path, History({("a", "b"): Record(1, 0)}))
     assert [p.name for p in tmp_path.iterdir()] == ["h.json"]
     assert load(path).pair_record("a", "b") == Record(1, 0)
+
+
+class Exits:
+    """A trace sink keeping when each agent left each top-level state of tararc."""
+
+    def __init__(self) -> None:
+        self.left: dict[tuple[str, str], float] = {}
+
+    def write(self, record: dict[str, Any]) -> None:
+        if record["kind"] == "exit" and len(record["path"]) == 2:
+            self.left.setdefault((record["agent"], record["path"][1]), record["t"])
+
+    def flush(self) -> None:
+        pass
+
+    def close(self) -> None:
+        pass
+
+
+@pytest.mark.parametrize("at", [0.0, 0.05, 0.1, 0.15, 0.2, 0.3, 0.5, 0.8])
+@pytest.mark.parametrize("seed", [0, 1, 2, 3, 4])
+def test_a_robot_failing_mid_exchange_at_thirty_percent_loss_splits_nobody(at: float, seed: int) -> None:
+    """r3 fails while the team meets or shares its states, on a radio losing 30 % of messages and
+    barrier notices: every survivor ends `done` with the same plan (r3 in it for all or for
+    none), and none waits at `meet` longer than `silence` (5 s)."""
+    plan = case("tararc.test.yaml", "four_robots_two_tasks")
+    plan = replace(plan, fail=[FailAt(agent="r3", at=at)])
+    exits = Exits()
+    result, lost = run_plan(plan, loss=0.3, seed=seed, trace=exits)
+    assert lost > 0
+    survivors = [a for a in result.agents if a != "r3"]
+    assert all(result.agents[a].outcome == "done" for a in survivors)
+    first = {a: result.agents[a].outputs["first"] for a in survivors}
+    assert all(f == first[survivors[0]] for f in first.values()), first
+    one_plan(result)
+    assert all(exits.left[a, "meet"] <= 5.0 + 0.1 for a in survivors if (a, "meet") in exits.left)

@@ -11,7 +11,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from behaviours.tararc.history import History  # noqa: E402
+from behaviours.tararc.history import History, p_term  # noqa: E402
 from behaviours.tararc.outcome import record_team  # noqa: E402
 from behaviours.tararc.plan import after_losses, history_of, make_plan, record_of  # noqa: E402
 from tools.tararc.ability import chain, failing_group, follow, group_abilities, match, paper_names  # noqa: E402
@@ -19,14 +19,14 @@ from tools.tararc.report import ability  # noqa: E402
 from tools.tararc.scenes import scene  # noqa: E402
 
 
-def allocations(fail_in: int) -> list[dict[str, Any]]:
+def allocations(fail_in: int, count: int = 4) -> list[dict[str, Any]]:
     """The bench's Figure 8 chain with the world left out: every robot where the scene puts it, full,
     each allocation made by `make_plan` from the history, then the history updated by `record_team`;
     in allocation `fail_in` every robot of the group `failing_group` picks is lost."""
     sc = scene(priorities=(3, 2, 1))
     history = History()
     runs = []
-    for k in range(1, 5):
+    for k in range(1, count + 1):
         states = {r: {"x": p["x"], "y": p["y"], "energy": 1.0, "record": record_of(history, r)}
                   for r, p in sc["robots"].items()}
         first = make_plan(states, sc["targets"])
@@ -35,7 +35,8 @@ def allocations(fail_in: int) -> list[dict[str, Any]]:
         last = after_losses(first, lost, 2)
         outcomes = [bool(g["members"]) for g in last["groups"]]
         history = record_team(history_of(states), first, last, lost, outcomes)
-        runs.append({"groups": groups, "failed": dict.fromkeys(lost, 1.0), "outcomes": outcomes})
+        runs.append({"groups": groups, "failed": dict.fromkeys(lost, 1.0), "outcomes": outcomes,
+                     "p": {g["agent"]: p_term(history, g["agent"]) for g in groups}})
     return runs
 
 
@@ -47,6 +48,15 @@ def test_a_group_failing_its_third_task_drops_and_gets_the_easiest_in_the_fourth
     assert (before["difficulty"], after["difficulty"]) == (0.6, 0.3)
     assert all(alloc[2]["difficulty"] == 0.9 for alloc in runs)  # the paper's group 2: always the hardest
     assert runs[3][1]["difficulty"] == 0.6  # group 1 moves up to the second hardest
+
+
+def test_the_failed_group_recovers_after_a_success() -> None:
+    runs = allocations(fail_in=3, count=5)
+    agent = chain(runs)[2][0]["agent"]
+    # P_j^beta of its agent after each allocation: 1 success, 2, then 2 of 3 (beta 1/2), then 3 of 4 (beta 1/3)
+    assert [round(run["p"].get(agent, -1), 3) for run in runs[:4]] == [1.0, 1.0, 0.816, 0.909]
+    fifth = chain(runs)[4][0]  # a fifth allocation: the group wins the second hardest task back
+    assert fifth["difficulty"] == 0.6 and fifth["F"] > chain(runs)[3][0]["F"] and fifth["agent"] != agent
 
 
 def test_without_the_failure_nothing_drops() -> None:
