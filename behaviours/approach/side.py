@@ -11,7 +11,7 @@ from behaviours.approach.navigate import Look, Tolerance, align_to_side, look_at
 from behaviours.approach.sight import named
 from behaviours.body import Body
 from hfsm.primitive import Context, Outcome, primitive
-from sim.perception.table_rect import TableRect, outline_points
+from sim.perception.table_rect import TableRect, outline_pieces
 
 
 def facing_long_side(rect: TableRect, body: Body) -> Side:
@@ -53,13 +53,19 @@ def position_to_centre_of_table_side(
 
 def edge_ahead(body: Body, pitch: float, band: float) -> float | None:
     """Distance (body frame x) to the nearest table-top edge straight ahead, within
-    `band` metres either side, seen with the down camera (forward camera if out of view)."""
+    `band` metres either side, seen with the down camera (forward camera if out of view).
+    An edge ahead runs across the band within one top face: a piece of outline on one side of it
+    only is not the top's edge (a short table's legs in the corners of the down view, put on the
+    plane of the top, look nearer than the top)."""
     for camera in ("down", "forward"):
         body.look(0.0, pitch)
-        pts = outline_points(body.image(camera), body.camera(camera))
-        ahead = pts[np.abs(pts[:, 1]) <= band] if len(pts) else pts
-        if len(ahead):
-            return float(ahead[:, 0].min())
+        seen = []
+        for pts, _ in outline_pieces(body.image(camera), body.camera(camera)):
+            ahead = pts[np.abs(pts[:, 1]) <= band]
+            if len(ahead) and ahead[:, 1].min() <= -band / 2 and ahead[:, 1].max() >= band / 2:
+                seen.append(float(ahead[:, 0].min()))
+        if seen:
+            return min(seen)
     return None
 
 

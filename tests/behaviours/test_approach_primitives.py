@@ -15,18 +15,19 @@ from sim.perception.table_rect import fit_rect, outline_points
 TABLE_YAW = 20.0  # degrees: the scenes' table is turned so nothing lines up with the axes
 
 
-def scene(folder: Path, robots: dict[str, dict[str, float]]) -> str:
-    """A scenario file: a 4 x 4 m room, the 0.8 x 0.5 m table turned by TABLE_YAW, no jitter."""
+def scene(folder: Path, robots: dict[str, dict[str, float]], length: float = 0.8, width: float = 0.5) -> str:
+    """A scenario file: a 4 x 4 m room, the table (0.8 x 0.5 m) turned by TABLE_YAW, no jitter."""
     path = folder / "scene.yaml"
-    data = {"room": {"width": 4.0, "depth": 4.0}, "table": {"yaw": TABLE_YAW}, "robots": robots}
+    data = {"room": {"width": 4.0, "depth": 4.0}, "table": {"yaw": TABLE_YAW, "length": length, "width": width},
+            "robots": robots}
     path.write_text(yaml.safe_dump(data), encoding="utf-8")
     return str(path)
 
 
-def at_table(along: float, out: float, facing: bool = True) -> dict[str, float]:
+def at_table(along: float, out: float, facing: bool = True, half_width: float = 0.25) -> dict[str, float]:
     """A robot start `out` m from the table's -y long edge, `along` from its middle."""
     a = math.radians(TABLE_YAW)
-    lx, ly = along, -(0.25 + out)
+    lx, ly = along, -(half_width + out)
     yaw = TABLE_YAW + (90.0 if facing else -90.0)
     return {"x": lx * math.cos(a) - ly * math.sin(a), "y": lx * math.sin(a) + ly * math.cos(a),
             "yaw": yaw}
@@ -111,6 +112,23 @@ states:
     assert result.agents["r1"].outcome == "held"
     assert 0.03 < judged["placements"]["r1"].depth < 0.1
     assert judged["score"]["robot_table_collisions"] == 0
+
+
+def test_go_to_the_lifting_point_is_not_fooled_by_a_short_tables_legs(tmp_path: Path) -> None:
+    """A 0.6 x 0.4 m table: from 0.35 m out, its near legs show in the corners of the down view and,
+    put on the plane of the top, look like an edge 0.12 m ahead; the robot must step in to the
+    real edge all the same (a held-back room: the pair lifted nothing, 11 times)."""
+    sc = scene(tmp_path, {"r1": at_table(0.0, 0.35, half_width=0.2)}, length=0.6, width=0.4)
+    probe = machine(tmp_path, """\
+doc: step in, then try a small lift
+outcomes: [held, not_held, lost]
+timer: 60
+states:
+  step_in: {do: go_to_the_lifting_point, on: {at_lifting_point: lift, lost: lost}}
+  lift: {do: lift_check, on: {held: held, not_held: not_held}}
+""")
+    result, _, _ = run_machine(probe, sc, 0)
+    assert result.agents["r1"].outcome == "held"
 
 
 def test_clear_way_moves_away_from_the_table_and_the_leader(tmp_path: Path) -> None:

@@ -14,7 +14,7 @@ sys.path.insert(0, str(ROOT))
 from behaviours.room.claims import claim_walls, crossings  # noqa: E402
 from sim.scenario import scenario_from_dict  # noqa: E402
 from tools.room.experiments import QUICK, Config, trials  # noqa: E402
-from tools.room.report import write  # noqa: E402
+from tools.room.report import wilson, write  # noqa: E402
 from tools.room.scenes import PAIR_GAP, REACH, room  # noqa: E402
 from tools.room.trials import RoomLine, cleared_at, measure, phase, run_room_trial  # noqa: E402
 from tools.sweep import run_sweep  # noqa: E402
@@ -46,12 +46,33 @@ def test_a_seed_always_draws_the_same_room_and_failure() -> None:
     assert failure["robot"] in room(7, 3, 8)["robots"] and 10.0 <= failure["at"] <= 20.0
 
 
-def test_the_campaign_has_the_issue_target_rooms() -> None:
-    target = [t for t in trials(Config()) if t.experiment == "target"]
+def test_the_campaign_covers_the_issue() -> None:
+    """At least 40 target rooms; K = 2..5 with N = 2K..2K+3, rooms with and without a failure;
+    the `rate:` form; radio loss 0.1 and 0.3 on rooms that also run lossless."""
+    every = trials(Config())
+    target = [t for t in every if t.experiment == "target"]
+    assert len(target) >= 40
     assert {len(t.scenario["tables"]) for t in target} == {3}
     assert {len(t.scenario["robots"]) for t in target} == {6, 7, 8}
     assert all(len(t.scenario["failures"]) == 1 for t in target)
-    assert {t.radio_loss for t in trials(Config()) if t.experiment == "loss"} == {0.3}
+    grid = [t for t in every if t.experiment == "kn"]
+    kn = {(len(t.scenario["tables"]), len(t.scenario["robots"])) for t in grid}
+    assert kn == {(k, n) for k in range(2, 6) for n in range(2 * k, 2 * k + 4)}
+    for k, n in kn:
+        rooms = [t for t in grid if (len(t.scenario["tables"]), len(t.scenario["robots"])) == (k, n)]
+        assert sorted(len(t.scenario["failures"]) for t in rooms) == [0, 1]
+    rated = [t for t in every if t.experiment == "rate"]
+    assert rated and all("rate" in t.scenario["failures"][0] for t in rated)
+    lossy = [t for t in every if t.experiment == "loss"]
+    assert {t.radio_loss for t in lossy} == {0.1, 0.3}
+    assert all(any(t.scenario == u.scenario and u.radio_loss == 0 for u in target) for t in lossy)
+
+
+def test_wilson_interval() -> None:
+    lo, hi = wilson(38, 40)
+    assert lo == pytest.approx(0.835, abs=0.002) and hi == pytest.approx(0.986, abs=0.002)
+    assert wilson(0, 0) == (0.0, 1.0)
+    assert wilson(10, 10)[1] == 1.0 and wilson(0, 10)[0] == 0.0
 
 
 def _event(t: float, agent: str, state: str, **values: Any) -> dict[str, Any]:
@@ -89,20 +110,29 @@ def test_the_report_goes_between_its_markers(tmp_path: Path) -> None:
                 "room": [8.0, 6.0], "cleared": cleared, "clear_time": 120.0 + trial if cleared else None,
                 "time": 130.0 if cleared else 2100.0, "error": None if cleared else "stopped at --max-time",
                 "distances": [0.01] * k if cleared else [0.01, 0.9, 0.02], "dropped": False, "collisions": 0,
-                "carries": [], "wall": 40.0, **more}
+                "carries": [], "wall": 40.0, "failures": [], **more}
 
     fail = {"robot": "r2", "at": 50.0, "phase": "mid-carry", "recovered": False}
-    results = [result(0, "target", 3, 6, True, failure={**fail, "phase": "spare", "recovered": True}),
-               result(1, "target", 3, 7, False, failure=fail), result(2, "k", 2, 4, True),
-               result(3, "k", 3, 6, True), result(4, "n", 3, 7, True)]
+    spare = {**fail, "phase": "spare", "recovered": True}
+    results = [result(0, "target", 3, 6, True, failures=[spare]),
+               result(1, "target", 3, 7, False, failures=[fail]), result(2, "kn", 2, 4, True),
+               result(3, "kn", 3, 6, True), result(4, "kn", 3, 7, True),
+               result(5, "rate", 3, 7, True, x=0.05, failures=[{**spare, "robot": "r4"}, spare]),
+               result(6, "loss", 3, 6, True, seed=0, loss=0.3, failures=[spare])]
     doc = tmp_path / "ROOM.md"
     doc.write_text("# Room\n\nbefore\n<!-- room_bench:start -->\nold\n<!-- room_bench:end -->\nafter\n")
     write(results, doc, tmp_path / "fig", "tools/room_bench.py", 600.0, 2, "load average 1.00")
     text = doc.read_text(encoding="utf-8")
     assert text.startswith("# Room\n\nbefore\n<!-- room_bench:start -->") and text.endswith("end -->\nafter\n")
-    assert "old" not in text and "**1 of 2 cleared** within 35 simulated minutes (50 %" in text
-    assert "mid-carry: 0/1; spare: 1/1" in text
-    assert "rooms without failure, lossless (median): 2: 122 s (1/1 cleared), 3: 124 s (2/2 cleared)" in text
+    assert "old" not in text
+    assert "**Target rooms: 1 of 2 cleared (50 %; 95 % Wilson interval 9-91 %)** within 35 simulated minutes" in text
+    assert "mid-carry: 0/1; spare: 4/4" in text
+    assert "Failure rate 0.05 per robot per minute (3 tables, 7 robots): 1 of 1 cleared" in text
+    assert "2 robots failed in all" in text
+    assert "Radio loss, the same target rooms (seeds 0): 0 %: 1/1 cleared, median 120 s; 30 %: 1/1" in text
+    assert "| 2 | 122 (1/1) |  |" in text and "| 3 | 123 (1/1) | 124 (1/1) |" in text  # without a failure
+    assert "| 3 | 120 (1/1) | - (0/1) | 120 (1/2) |" in text  # with a failure: the target rooms
+    assert "| 2 |  |  |  |" not in text
     assert "- trial 1 (target, seed 1): gaps 0.01, 0.90, 0.02 m" in text
     assert sorted(p.name for p in (tmp_path / "fig").iterdir()) == ["time_vs_k.png", "time_vs_n.png"]
 

@@ -1,38 +1,52 @@
-"""The campaign as trials: the issue's target rooms, then time against K and N, then radio loss."""
+"""The campaign as trials: the issue's target rooms, time against K and N (with and without a failure),
+failure rates (the scenario's `rate:` form) and radio loss (the same rooms at 0, 0.1 and 0.3)."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from typing import Any
 
 from tools.room.scenes import room
 from tools.room.trials import RoomTrial
 
 TARGET = "target"  # 3 tables, 6 to 8 robots, one random failure each, lossless: issue 10's target
+GRID = "kn"  # K = 2..5 tables, N = 2K..2K+3 robots
+RATE = "rate"  # K = 3, N = 7, every robot at risk at a rate (failures per robot per minute)
+LOSS = "loss"  # the first target rooms again, at a radio loss
 
 
 @dataclass(frozen=True)
 class Config:
-    target_rooms: int = 14  # seeds first_seed.. , N cycling 6, 7, 8
-    ks: tuple[int, ...] = (2, 3, 4, 5)  # time against K: N = 2K, no failure
-    k_seeds: int = 1
-    ns: tuple[int, ...] = (6, 7, 8, 9)  # time against N: K = 3, no failure
-    loss_rooms: int = 2  # K = 3, N = 7, 30 % radio loss: one without failure, one with
+    target_rooms: int = 40  # seeds first_seed.. , N cycling 6, 7, 8
+    ks: tuple[int, ...] = (2, 3, 4, 5)
+    extra: tuple[int, ...] = (0, 1, 2, 3)  # N = 2K + extra
+    kn_seeds: int = 2  # per (K, N): the first without failure, the others with one failure each
+    rates: tuple[float, ...] = (0.02, 0.05)  # failures per robot per minute
+    rate_seeds: int = 3
+    losses: tuple[float, ...] = (0.1, 0.3)
+    loss_rooms: int = 4  # the first target rooms, each again at every loss
     max_time: float = 2100.0  # the issue's 35 simulated minutes
     fail_window: tuple[float, float] = (5.0, 150.0)
     first_seed: int = 1
 
 
-QUICK = Config(target_rooms=1, ks=(2,), k_seeds=1, ns=(), loss_rooms=0, max_time=20.0)
+QUICK = Config(target_rooms=1, ks=(2,), extra=(0,), kn_seeds=1, rates=(), losses=(), max_time=20.0)
+
+
+def _rated(scenario: dict[str, Any], rate: float) -> dict[str, Any]:
+    return {**scenario, "failures": [{"rate": rate, "reason": "bench: failure rate"}]}
 
 
 def trials(c: Config) -> list[RoomTrial]:
-    s0 = c.first_seed
-    window = c.fail_window
-    out = [RoomTrial(TARGET, 6 + i % 3, s0 + i, room(s0 + i, 3, 6 + i % 3, failure=True, fail_window=window),
-                     max_time=c.max_time) for i in range(c.target_rooms)]
-    out += [RoomTrial("k", k, s, room(s, k, 2 * k), max_time=c.max_time)
-            for k in c.ks for s in range(s0 + 100, s0 + 100 + c.k_seeds)]
-    out += [RoomTrial("n", n, s0 + 200, room(s0 + 200, 3, n), max_time=c.max_time) for n in c.ns]
-    out += [RoomTrial("loss", 0.3, s, room(s, 3, 7, failure=i % 2 == 1, fail_window=window), radio_loss=0.3,
-                      max_time=c.max_time) for i, s in enumerate(range(s0 + 300, s0 + 300 + c.loss_rooms))]
-    return out
+    s0, window = c.first_seed, c.fail_window
+    target = [RoomTrial(TARGET, 6 + i % 3, s0 + i, room(s0 + i, 3, 6 + i % 3, failure=True,
+                                                        fail_window=window), max_time=c.max_time)
+              for i in range(c.target_rooms)]
+    grid = [RoomTrial(GRID, (k, 2 * k + e), s, room(s, k, 2 * k + e, failure=j > 0, fail_window=window),
+                      max_time=c.max_time)
+            for k in c.ks for e in c.extra for j, s in enumerate(range(s0 + 100, s0 + 100 + c.kn_seeds))]
+    rated = [RoomTrial(RATE, rate, s, _rated(room(s, 3, 7), rate), max_time=c.max_time)
+             for rate in c.rates for s in range(s0 + 200, s0 + 200 + c.rate_seeds)]
+    lossy = [replace(t, experiment=LOSS, x=loss, radio_loss=loss) for loss in c.losses
+             for t in target[:c.loss_rooms]]
+    return target + grid + rated + lossy
