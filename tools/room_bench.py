@@ -70,7 +70,9 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--rate-seeds", type=int, help="rooms per rate (default 3)")
     p.add_argument("--losses", help="radio losses the first target rooms run again at (default 0.1,0.3)")
     p.add_argument("--loss-rooms", type=int, help="target rooms run again at each loss (default 4)")
-    p.add_argument("--max-time", type=float, help="simulated seconds per room at most (default 2100)")
+    p.add_argument("--max-time", type=float, help="simulated seconds per target room at most (default 2100)")
+    p.add_argument("--other-max-time", type=float,
+                   help="simulated seconds per room of the other sets at most (default 600)")
     p.add_argument("--trials", help="only these trial indices of the campaign, comma-separated")
     p.add_argument("--first-seed", type=int, default=1)
     add_executor_args(p)
@@ -82,7 +84,7 @@ def main(argv: list[str] | None = None) -> int:
     config = replace(QUICK if args.quick else Config(), first_seed=args.first_seed)
     numbers: dict[str, Any] = {"target_rooms": args.rooms, "kn_seeds": args.kn_seeds,
                                "rate_seeds": args.rate_seeds, "loss_rooms": args.loss_rooms,
-                               "max_time": args.max_time}
+                               "max_time": args.max_time, "other_max_time": args.other_max_time}
     lists = {"ks": (args.ks, int), "extra": (args.extra, int), "rates": (args.rates, float),
              "losses": (args.losses, float)}
     numbers.update({name: tuple(kind(x) for x in text.split(",") if x) for name, (text, kind) in lists.items()

@@ -10,40 +10,55 @@ from typing import Any
 Point = tuple[float, float]
 Near = list[tuple[float, float, float]]
 JAMMED_S, DETOUR_S = 1.0, 2.0
+STALLED_S, PROGRESS = 4.0, 0.1  # no PROGRESS metres nearer the goal in STALLED_S seconds: stalled
 
 
 @dataclass
 class Detour:
-    """A robot slowed to a crawl by what it senses for JAMMED_S seconds heads across its way (to
-    the side with less near it the first time, then always that side) for DETOUR_S seconds, twice
-    that the second time, and so on, still dodging: a way out of the wedges that sliding alone never
-    leaves (a bug-style escape, deterministic)."""
+    """A robot slowed to a crawl by what it senses for JAMMED_S seconds, or stalled (it comes no
+    PROGRESS metres nearer its goal in STALLED_S seconds: rocking in and out of the clearance of
+    things standing between it and its goal, which the crawl test misses), heads across its way
+    (to the side with less near it the first time, then always that side) for DETOUR_S seconds,
+    twice that the second time, and so on, still dodging: a way out of the wedges that sliding
+    alone never leaves (a bug-style escape, deterministic)."""
 
     slow_since: float | None = None
     until: float = -1.0
     way: Point = (0.0, 0.0)
     side: float = 0.0  # 1: left of the way it wants to go, -1: right; kept once chosen
     detours: int = 0
+    best: float = math.inf  # the nearest to its goal it has come, and when
+    best_at: float = 0.0
 
-    def steer(self, now: float, wanted: Point, seen: list[Point], clearance: float, speed: float) -> Point:
-        """The velocity (room frame) to command now instead of `wanted`."""
+    def steer(self, now: float, wanted: Point, seen: list[Point], clearance: float, speed: float,
+              left: float | None = None) -> Point:
+        """The velocity (room frame) to command now instead of `wanted`; `left`: metres to the goal."""
+        if left is not None and left < self.best - PROGRESS:
+            self.best, self.best_at = left, now
         if now < self.until:
             return dodge(self.way, seen, clearance, speed)
         got = dodge(wanted, seen, clearance, speed)
+        if left is not None and now - self.best_at >= STALLED_S:
+            self.best_at = now
+            self._across(now, wanted, seen, speed)
+            return dodge(self.way, seen, clearance, speed)
         if math.hypot(*got) >= 0.25 * math.hypot(*wanted):
             self.slow_since = None
             return got
         if self.slow_since is None:
             self.slow_since = now
         elif now - self.slow_since >= JAMMED_S:
-            pace = math.hypot(*wanted) or 1e-9
-            left = (-wanted[1] / pace * speed, wanted[0] / pace * speed)
-            if self.side == 0.0:
-                self.side = -1.0 if sum(left[0] * ox + left[1] * oy for ox, oy in seen) > 0 else 1.0
-            self.way = (left[0] * self.side, left[1] * self.side)
-            self.detours += 1
-            self.until, self.slow_since = now + DETOUR_S * self.detours, None
+            self._across(now, wanted, seen, speed)
         return got
+
+    def _across(self, now: float, wanted: Point, seen: list[Point], speed: float) -> None:
+        pace = math.hypot(*wanted) or 1e-9
+        left = (-wanted[1] / pace * speed, wanted[0] / pace * speed)
+        if self.side == 0.0:
+            self.side = -1.0 if sum(left[0] * ox + left[1] * oy for ox, oy in seen) > 0 else 1.0
+        self.way = (left[0] * self.side, left[1] * self.side)
+        self.detours += 1
+        self.until, self.slow_since = now + DETOUR_S * self.detours, None
 
 
 def dodge(velocity: Point, seen: list[Point], clearance: float, speed: float) -> Point:

@@ -93,7 +93,8 @@ def go_to(ctx: Context, *, x: float, y: float, offset: list[float] | None = None
             velocity = heading(here, goal, pace, others, clearance)
             seen = sensed(robot, look, here[2])
             if seen:
-                velocity = way_out.steer(ctx.time, velocity, seen, clearance, pace)
+                left = math.hypot(goal[0] - here[0], goal[1] - here[1])
+                velocity = way_out.steer(ctx.time, velocity, seen, clearance, pace, left)
             robot.set_velocity(*body_velocity(here, velocity, pace))
             ctx.wait()
     finally:

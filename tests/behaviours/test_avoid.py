@@ -35,3 +35,35 @@ def test_wedged_it_takes_a_detour_across_its_way() -> None:
     got = [detour.steer(t * 0.05, (0.5, 0.0), boxed, 0.3, 0.5) for t in range(30)]
     assert all(math.hypot(*v) < 1e-9 for v in got)  # boxed in: it stays put
     assert detour.detours == 1 and abs(detour.way[0]) < 1e-9 and abs(detour.way[1]) == 0.5
+
+
+def _walk(detour: Detour | None, start: tuple[float, float], goal: tuple[float, float],
+          posts: list[tuple[float, float]], seconds: float) -> tuple[float, float]:
+    """A point robot (radius 0.15) driven as go_to drives, round posts of radius 0.15 it senses
+    within 1 m (nearest points), at 0.5 m/s and 20 Hz; where it is after `seconds`."""
+    from behaviours.drive.goto import heading
+
+    x, y = start
+    for tick in range(round(seconds / 0.05)):
+        left = math.dist((x, y), goal)
+        if left < 0.1:
+            break
+        wanted = heading((x, y, 0.0), goal, 0.5, [], 0.3)
+        seen = []
+        for px, py in posts:
+            gap = math.dist((x, y), (px, py))
+            if gap - 0.3 < 1.0:
+                seen.append(((px - x) * (gap - 0.3) / gap, (py - y) * (gap - 0.3) / gap))
+        v = detour.steer(tick * 0.05, wanted, seen, 0.3, 0.5, left) if detour and seen else wanted
+        x, y = x + v[0] * 0.05, y + v[1] * 0.05
+    return (x, y)
+
+
+def test_rocking_at_the_clearance_of_two_posts_before_its_goal_it_goes_round() -> None:
+    """Two robots that failed stand south and east of it, its goal beyond them to the south-east:
+    backing off and coming back in turn, it never crawls, so only its lack of progress tells it
+    to go round (the bench's Figure 8 chain, its third allocation)."""
+    posts = [(0.03, -0.44), (0.44, 0.08)]
+    goal = (4.7, -3.4)
+    end = _walk(Detour(), (0.0, 0.0), goal, posts, 60.0)
+    assert math.dist(end, goal) < 0.1

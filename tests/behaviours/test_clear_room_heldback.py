@@ -138,9 +138,9 @@ CASES = [("wide", WIDE, 0, "r6"), ("square", SQUARE, 1, "r4"), ("narrow", NARROW
          ("oblique", OBLIQUE, 3, "r5"), ("two", TWO, 4, "r2")]
 IDS = [c[0] for c in CASES]
 # `wide` is not cleared yet, and is kept out of the slow test rather than changed or skipped: its
-# 0.6 x 0.4 table slips off the survivor's hands when r6 fails mid-carry, leans on r6's raised arms,
-# and falls on its side while the survivor recentres and backs away; nobody lifts a table on its side
-# (docs/ROOM.md, "Not done"). Put it back in CLEARED when the survivor leaves such a table alone.
+# 0.6 x 0.4 table slips off the survivor's hands when r6 fails mid-carry and leans, tilted, on r6's
+# raised arms; the survivor's slide takes it for a flat table and its look for the wall says `reached`
+# with the table 1.67 m off (docs/ROOM.md, "Not done"). Put it back when the slide refuses a tilted top.
 CLEARED = [c for c in CASES if c[0] != "wide"]
 
 
