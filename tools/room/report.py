@@ -116,7 +116,7 @@ def _story(r: Result) -> str:
 
 
 def _row(r: Result) -> str:
-    fs = failures(r)
+    fs = r.get("failures") or failures(r)  # with the planned ones the run ended before (`not reached`)
     fail = "; ".join(f"{f['robot']} at {f['at']:.0f} s, {f['phase']}" for f in fs) or "none"
     if r["experiment"] == RATE:
         fail = f"rate {r['x']}/min: {fail}"
