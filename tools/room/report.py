@@ -89,7 +89,8 @@ def _plot(results: list[Result], key: Callable[[Result], float], path: Path, xla
                     label=f"{name}: median")
     ax.set_xlabel(xlabel)
     ax.set_ylabel("simulated seconds to clear")
-    ax.set_ylim(bottom=0)
+    tops = [r["clear_time"] if r["cleared"] else r["time"] for r in results]
+    ax.set_ylim(0, 1.25 * max([t for t in tops if t is not None], default=1.0))
     ax.set_xticks(sorted({key(r) for r in results}))
     ax.set_title(title, fontsize=10)
     ax.grid(True, alpha=0.3)
