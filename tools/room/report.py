@@ -208,7 +208,7 @@ def lines_for(results: list[Result], command: str, wall: float, workers: int, lo
         out.append("- Radio loss, the same target rooms (seeds " + ", ".join(str(s) for s in sorted(seeds))
                    + "): " + "; ".join(f"{100 * x:.0f} %: {_cleared(rows)}/{len(rows)} cleared, median "
                                f"{_s(_median([r['clear_time'] for r in rows if r['cleared']]))} s"
-                               for x, rows in levels) + ".")
+                               for x, rows in levels if rows) + ".")
     out += _kn_tables(results)
     out += ["", "![time against K](figures/room/time_vs_k.png) ![time against N](figures/room/time_vs_n.png)",
             "", "| trial | set | seed | room m | K | N | loss | failure | cleared | sim s | worst gap m | "
