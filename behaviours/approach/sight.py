@@ -155,7 +155,7 @@ def nearest_of_colour(body: Body, image: np.ndarray, colour: int, near: Point) -
     seen = [r for r in seen if r.blob is not None and r.blob.found]
     if not seen:
         return NO_ROBOT
-    return min(seen, key=lambda r: distance(r.position, near) if math.isfinite(r.position[0]) else math.inf)
+    return min(seen, key=lambda r: off(r, near))
 
 
 def see_robot(body: Body, yaw: float, pitch: float, own: int, only: int = -1,
@@ -173,13 +173,26 @@ def see_robot(body: Body, yaw: float, pitch: float, own: int, only: int = -1,
     return robot_sighting(body, body.camera("forward"), max(blobs, key=lambda b: b.area_px))
 
 
+def off(seen: RobotSighting, near: Point) -> float:
+    """How far a sighting stands from `near` (infinite when its feet were not on the floor)."""
+    return distance(seen.position, near) if math.isfinite(seen.position[0]) else math.inf
+
+
 def scan_for_robot(body: Body, yaws: Sequence[float], pitch: float, own: int,
-                   only: int = -1, near: Point | None = None) -> RobotSighting:
+                   only: int = -1, near: Point | None = None, close: float = 1.5) -> RobotSighting:
+    """Turn the head through `yaws` until a robot (of colour `only`) is seen. With `only` and
+    `near`, a robot of that colour seen more than `close` m from `near` may be another robot
+    wearing it (colours repeat beyond ten robots): the scan goes on, and of all those seen the one
+    nearest `near` is taken."""
+    others = []
     for yaw in yaws:
         seen = see_robot(body, yaw, pitch, own, only, near)
-        if seen.found:
+        if not seen.found:
+            continue
+        if only < 0 or near is None or off(seen, near) <= close:
             return seen
-    return NO_ROBOT
+        others.append(seen)
+    return min(others, key=lambda s: off(s, near)) if others and near is not None else NO_ROBOT
 
 
 def leader_behind_table(body: Body, pitch: float, own: int, only: int = -1,
