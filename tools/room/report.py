@@ -89,7 +89,8 @@ def _plot(results: list[Result], key: Callable[[Result], float], path: Path, xla
                     label=f"{name}: median")
     ax.set_xlabel(xlabel)
     ax.set_ylabel("simulated seconds to clear")
-    ax.set_ylim(bottom=0)
+    tops = [r["clear_time"] if r["cleared"] else r["time"] for r in results]
+    ax.set_ylim(0, 1.25 * max([t for t in tops if t is not None], default=1.0))
     ax.set_xticks(sorted({key(r) for r in results}))
     ax.set_title(title, fontsize=10)
     ax.grid(True, alpha=0.3)
@@ -116,7 +117,7 @@ def _story(r: Result) -> str:
 
 
 def _row(r: Result) -> str:
-    fs = failures(r)
+    fs = r.get("failures") or failures(r)  # with the planned ones the run ended before (`not reached`)
     fail = "; ".join(f"{f['robot']} at {f['at']:.0f} s, {f['phase']}" for f in fs) or "none"
     if r["experiment"] == RATE:
         fail = f"rate {r['x']}/min: {fail}"
