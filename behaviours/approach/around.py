@@ -110,7 +110,8 @@ def go_to_opposite_side_of_table(
     that the leader now stands behind the table (its blob above the table's). `length` and
     `width`: the table as the leader measured it (0: unknown), to tell a whole view. With a
     `table` ([x, y], own start frame): the table seen nearest it, within `gate` m. With a
-    `leader_colour` (>= 0, as the leader said it): only a robot of that colour is the leader."""
+    `leader_colour` (>= 0, as the leader said it): only a robot of that colour is the leader, and
+    with a `table` too, the one of that colour nearest the table (colours repeat beyond ten)."""
     body = Body(ctx)
     named_at = named(table)
     look = Look(pitch=pitch, spread=spread, target=named_at, gate=gate)
@@ -124,7 +125,7 @@ def go_to_opposite_side_of_table(
     rect = clear_view(body, look, known, own, step, views, min_points, in_line)
     if not rect.found:
         return Outcome("lost")
-    leader = scan_for_robot(body, [0.0, 0.6, -0.6, 1.2, -1.2], pitch, own, leader_colour)
+    leader = scan_for_robot(body, [0.0, 0.6, -0.6, 1.2, -1.2], pitch, own, leader_colour, named_at)
     target = opposite_side(rect, leader, body.odometry()[:2])
     for _ in range(legs):
         points = route(rect, body.odometry()[:2], target, margin, gap)
@@ -136,6 +137,6 @@ def go_to_opposite_side_of_table(
     tol = Tolerance(along_tolerance, out_tolerance, yaw_tolerance)
     rect, _, ok = align_to_side(body, rect, target.middle, gap, look, tol, tries,
                                 known if known.length > 0 else None)
-    if not leader_behind_table(body, pitch, own, leader_colour):
+    if not leader_behind_table(body, pitch, own, leader_colour, named_at):
         return Outcome("leader_not_across", leader_seen=leader.found)
     return Outcome("at_opposite_side" if ok else "not_aligned", leader_seen=leader.found)

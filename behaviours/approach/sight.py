@@ -11,12 +11,14 @@ import numpy as np
 from behaviours.approach.frames import Point, body_to_odom, distance
 from behaviours.body import Body
 from sim.perception import (
+    DEFAULT_CONFIG,
     NO_RECT,
     Blob,
     CameraModel,
     TableRect,
     TableSeen,
     blob_ground,
+    find_robot_parts,
     find_robots,
     find_table,
     fit_rect,
@@ -133,15 +135,8 @@ def other_robot(i: int, own: int, only: int = -1) -> bool:
     return i == only if only >= 0 else i != own
 
 
-def see_robot(body: Body, yaw: float, pitch: float, own: int, only: int = -1) -> RobotSighting:
-    """The largest blob of another robot's colour (of colour `only` if >= 0) in this view, if any."""
-    body.look(clamp_yaw(yaw), pitch)
-    robots = enumerate(find_robots(body.image("forward")))
-    blobs = [b for i, b in robots if other_robot(i, own, only) and b.found]
-    if not blobs:
-        return NO_ROBOT
-    blob = max(blobs, key=lambda b: b.area_px)
-    camera = body.camera("forward")
+def robot_sighting(body: Body, camera: CameraModel, blob: Blob) -> RobotSighting:
+    """Another robot's blob put on the floor: where its lowest pixel meets it, odometry frame."""
     ground = blob_ground(blob, camera)
     bearing = pixel_bearing(camera, blob.lowest_u, blob.lowest_row + 1.0)
     if not ground.found:
@@ -150,19 +145,65 @@ def see_robot(body: Body, yaw: float, pitch: float, own: int, only: int = -1) ->
                          ground.distance, blob)
 
 
+def nearest_of_colour(body: Body, image: np.ndarray, colour: int, near: Point) -> RobotSighting:
+    """Of the robots of colour `colour` in this image, told apart (`find_robot_parts`), the one
+    standing nearest `near` (odometry frame): colours repeat beyond ten robots, and a partner is
+    known to stand near its table."""
+    camera = body.camera("forward")
+    parts = find_robot_parts(image, DEFAULT_CONFIG.robot_colours[colour])
+    seen = [robot_sighting(body, camera, b) for b in parts]
+    seen = [r for r in seen if r.blob is not None and r.blob.found]
+    if not seen:
+        return NO_ROBOT
+    return min(seen, key=lambda r: off(r, near))
+
+
+def see_robot(body: Body, yaw: float, pitch: float, own: int, only: int = -1,
+              near: Point | None = None) -> RobotSighting:
+    """The largest blob of another robot's colour (of colour `only` if >= 0) in this view, if any;
+    with `only` and `near`, the robot of that colour nearest `near` (`nearest_of_colour`)."""
+    body.look(clamp_yaw(yaw), pitch)
+    image = body.image("forward")
+    if only >= 0 and near is not None:
+        return nearest_of_colour(body, image, only, near)
+    robots = enumerate(find_robots(image))
+    blobs = [b for i, b in robots if other_robot(i, own, only) and b.found]
+    if not blobs:
+        return NO_ROBOT
+    return robot_sighting(body, body.camera("forward"), max(blobs, key=lambda b: b.area_px))
+
+
+def off(seen: RobotSighting, near: Point) -> float:
+    """How far a sighting stands from `near` (infinite when its feet were not on the floor)."""
+    return distance(seen.position, near) if math.isfinite(seen.position[0]) else math.inf
+
+
 def scan_for_robot(body: Body, yaws: Sequence[float], pitch: float, own: int,
-                   only: int = -1) -> RobotSighting:
+                   only: int = -1, near: Point | None = None, close: float = 1.5) -> RobotSighting:
+    """Turn the head through `yaws` until a robot (of colour `only`) is seen. With `only` and
+    `near`, a robot of that colour seen more than `close` m from `near` may be another robot
+    wearing it (colours repeat beyond ten robots): the scan goes on, and of all those seen the one
+    nearest `near` is taken."""
+    others = []
     for yaw in yaws:
-        seen = see_robot(body, yaw, pitch, own, only)
-        if seen.found:
+        seen = see_robot(body, yaw, pitch, own, only, near)
+        if not seen.found:
+            continue
+        if only < 0 or near is None or off(seen, near) <= close:
             return seen
-    return NO_ROBOT
+        others.append(seen)
+    return min(others, key=lambda s: off(s, near)) if others and near is not None else NO_ROBOT
 
 
-def leader_behind_table(body: Body, pitch: float, own: int, only: int = -1) -> bool:
-    """Section 3.5: the other robot (of colour `only` if >= 0) stands behind the table if the
-    table's blob is below its blob (looking straight ahead)."""
+def leader_behind_table(body: Body, pitch: float, own: int, only: int = -1,
+                        near: Point | None = None) -> bool:
+    """Section 3.5: the other robot (of colour `only` if >= 0; with `near`, the one of that colour
+    nearest it) stands behind the table if the table's blob is below its blob (looking straight
+    ahead)."""
     body.look(0.0, pitch)
     image = body.image("forward")
     table = find_table(image)
+    if only >= 0 and near is not None:
+        leader = nearest_of_colour(body, image, only, near)
+        return leader.blob is not None and is_below(table, leader.blob)
     return any(is_below(table, b) for i, b in enumerate(find_robots(image)) if other_robot(i, own, only))

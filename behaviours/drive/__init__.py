@@ -3,8 +3,9 @@ light bodies of team scenarios (whose odometry is in the room's frame), usable b
 
 from __future__ import annotations
 
+from behaviours.drive.along import go_along, odometry_pose
 from behaviours.drive.back import back_away
 from behaviours.drive.goto import go_to, hold, stop
 from hfsm.primitive import Primitive
 
-PRIMITIVES: tuple[Primitive, ...] = (go_to, hold, stop, back_away)
+PRIMITIVES: tuple[Primitive, ...] = (go_to, go_along, odometry_pose, hold, stop, back_away)

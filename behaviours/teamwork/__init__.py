@@ -11,6 +11,7 @@ from behaviours.teamwork.memory import tararc_recall, tararc_remember
 from behaviours.teamwork.plans import tararc_allocate, tararc_help
 from behaviours.teamwork.radio import partner_silent, tararc_watch
 from behaviours.teamwork.room import room_allocate, room_assign, room_locate, room_relocalise, room_watch
+from behaviours.teamwork.walk import room_give_way, room_route
 from hfsm.primitive import Primitive
 
 PRIMITIVES: tuple[Primitive, ...] = (
@@ -26,4 +27,6 @@ PRIMITIVES: tuple[Primitive, ...] = (
     room_locate,
     room_relocalise,
     room_watch,
+    room_route,
+    room_give_way,
 )

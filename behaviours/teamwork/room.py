@@ -61,15 +61,17 @@ def _newer(a: dict[str, Any], b: dict[str, Any]) -> bool:
     return (float(a["t"]), str(a["by"])) > (float(b["t"]), str(b["by"]))
 
 
-@primitive(outcomes=["changed"], outputs=["lost", "done", "seen", "spent", "sliding"])
+@primitive(outcomes=["changed"], outputs=["lost", "done", "seen", "spent", "sliding", "where"])
 def room_watch(ctx: Context, *, team: list[Any], lost: list[Any], done: list[Any], seen: dict[str, Any],
                spent: list[Any] | None = None, sliding: list[Any] | None = None, silence: float = 5.0,
-               message: str = "room_alive") -> Outcome:
+               message: str = "room_alive", where: dict[str, Any] | None = None) -> Outcome:
     """Listen to the team's heartbeats (`message`, said with data {lost, done, seen, spent, sliding})
     until the team knows more than given: a robot silent for `silence` s or said lost, a table said
     done, a dropped table seen later, a pairing spent, a table slid alone. Each is a set that only
     grows (a later sighting replaces an earlier one), so robots that heard the same news, in any
-    order, agree."""
+    order, agree. `where`: where each robot last said it stood (a heartbeat's `pose` from its `start`,
+    room_pulse), in the room's frame: kept, not news."""
+    known_where = {str(r): [float(p[0]), float(p[1])] for r, p in (where or {}).items()}
     known_lost, known_done = {str(r) for r in lost}, {str(t) for t in done}
     known_spent = {str(c) for c in spent or []}
     known_sliding = {str(e) for e in sliding or []}
@@ -84,6 +86,9 @@ def room_watch(ctx: Context, *, team: list[Any], lost: list[Any], done: list[Any
         while (m := ctx.receive(message)) is not None:
             if m.sender in heard:
                 heard[m.sender] = ctx.tick
+            pose, start = m.data.get("pose"), m.data.get("start")
+            if pose and start:
+                known_where[m.sender] = to_room(start, [pose["x"], pose["y"]])
             data = m.data.get("data", {})
             known_lost.update(str(r) for r in data.get("lost", []))
             known_done.update(str(t) for t in data.get("done", []))
@@ -99,7 +104,7 @@ def room_watch(ctx: Context, *, team: list[Any], lost: list[Any], done: list[Any
     ctx.wait_until(news)
     return Outcome("changed", lost=sorted(known_lost), done=sorted(known_done),
                    seen=dict(sorted(known_seen.items())), spent=sorted(known_spent),
-                   sliding=sorted(known_sliding))
+                   sliding=sorted(known_sliding), where=dict(sorted(known_where.items())))
 
 
 @primitive(outcomes=["relocalised", "kept"], outputs=["start"])

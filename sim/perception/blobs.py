@@ -127,6 +127,25 @@ def find_robots(image: np.ndarray, cfg: PerceptionConfig = DEFAULT_CONFIG) -> tu
     return tuple(blob_from_mask(colour_mask(hsv, c, cfg), cfg) for c in cfg.robot_colours)
 
 
+def find_robot_parts(image: np.ndarray, colour: RGB, cfg: PerceptionConfig = DEFAULT_CONFIG,
+                     gap: int = 2) -> tuple[Blob, ...]:
+    """One Blob per robot of this colour in view, apart (colours repeat beyond ten robots): the
+    colour's components that are not noise, those whose columns overlap or come within `gap`
+    pixels of each other taken for one robot (its limbs), left to right."""
+    labels, keep = components(colour_mask(to_hsv(image), colour, cfg), cfg)
+    spans = []
+    for label in keep:
+        cols = np.nonzero((labels == label).any(axis=0))[0]
+        spans.append((int(cols[0]), int(cols[-1]), int(label)))
+    groups: list[tuple[int, list[int]]] = []
+    for left, right, label in sorted(spans):
+        if groups and left <= groups[-1][0] + gap:
+            groups[-1] = (max(groups[-1][0], right), [*groups[-1][1], label])
+        else:
+            groups.append((right, [label]))
+    return tuple(blob_from_mask(np.isin(labels, members), cfg) for _, members in groups)
+
+
 def pixel_bearing(camera: CameraModel, u: float, v: float) -> float:
     """Horizontal direction (rad, left +, body frame) of the ray through (u, v)."""
     d = camera.ray(u, v)

@@ -89,7 +89,8 @@ def _plot(results: list[Result], key: Callable[[Result], float], path: Path, xla
                     label=f"{name}: median")
     ax.set_xlabel(xlabel)
     ax.set_ylabel("simulated seconds to clear")
-    ax.set_ylim(bottom=0)
+    tops = [r["clear_time"] if r["cleared"] else r["time"] for r in results]
+    ax.set_ylim(0, 1.25 * max([t for t in tops if t is not None], default=1.0))
     ax.set_xticks(sorted({key(r) for r in results}))
     ax.set_title(title, fontsize=10)
     ax.grid(True, alpha=0.3)
@@ -116,7 +117,7 @@ def _story(r: Result) -> str:
 
 
 def _row(r: Result) -> str:
-    fs = failures(r)
+    fs = r.get("failures") or failures(r)  # with the planned ones the run ended before (`not reached`)
     fail = "; ".join(f"{f['robot']} at {f['at']:.0f} s, {f['phase']}" for f in fs) or "none"
     if r["experiment"] == RATE:
         fail = f"rate {r['x']}/min: {fail}"
@@ -208,7 +209,7 @@ def lines_for(results: list[Result], command: str, wall: float, workers: int, lo
         out.append("- Radio loss, the same target rooms (seeds " + ", ".join(str(s) for s in sorted(seeds))
                    + "): " + "; ".join(f"{100 * x:.0f} %: {_cleared(rows)}/{len(rows)} cleared, median "
                                f"{_s(_median([r['clear_time'] for r in rows if r['cleared']]))} s"
-                               for x, rows in levels) + ".")
+                               for x, rows in levels if rows) + ".")
     out += _kn_tables(results)
     out += ["", "![time against K](figures/room/time_vs_k.png) ![time against N](figures/room/time_vs_n.png)",
             "", "| trial | set | seed | room m | K | N | loss | failure | cleared | sim s | worst gap m | "

@@ -14,6 +14,7 @@ from sim.perception import (
     NO_BLOB,
     blob_from_mask,
     find_robot,
+    find_robot_parts,
     find_robots,
     find_table,
     in_centre_band,
@@ -171,3 +172,21 @@ def test_ten_robot_colours_are_told_apart(scene: SceneFactory, in_view: list[str
         assert blob.found
         assert abs(blob.left - us.min()) <= 1 and abs(blob.right - us.max()) <= 1
         assert abs(blob.top - vs.min()) <= 1
+
+
+def test_robots_of_one_colour_are_told_apart(scene: SceneFactory) -> None:
+    """Beyond ten robots colours repeat (r11 wears r1's): each robot of a colour in view is a
+    blob of its own, where it stands, left to right; one robot is one blob (its limbs joined)."""
+    robots = {"r1": {"x": -2.0, "y": 0.0, "yaw": 0.0}, "r2": {"x": 1.5, "y": 0.9, "yaw": 180.0}}
+    for i in range(3, 12):
+        robots[f"r{i}"] = {"x": -2.7 - 0.4 * (i % 3), "y": 3.0 - 0.6 * (i // 3), "yaw": 0.0}
+    robots["r12"] = {"x": 1.5, "y": -0.9, "yaw": 180.0}  # the twelfth robot: r2's colour
+    s = scene(robots, size=(640, 480), table={"x": 3.0, "y": 3.0})
+    image = s.image()
+    parts = find_robot_parts(image, DEFAULT_CONFIG.robot_colours[1])
+    assert len(parts) == 2
+    for blob, name in zip(parts, ["r2", "r12"], strict=True):
+        vs, us = np.nonzero(s.robot_seg(name))
+        assert abs(blob.left - us.min()) <= 1 and abs(blob.right - us.max()) <= 1
+        assert abs(blob.lowest_row - vs.max()) <= 1
+    assert len(find_robot_parts(image, DEFAULT_CONFIG.robot_colours[2])) == 0
