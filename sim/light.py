@@ -111,17 +111,17 @@ class LightRobot(Base):
             return []
         x, y, yaw = self._true_pose()
         inner = LIGHT_BODY.radius + 0.01
-        starts, ends = [], []
-        for k in range(beams):
-            c, s = math.cos(yaw + 2 * math.pi * k / beams), math.sin(yaw + 2 * math.pi * k / beams)
-            starts.append([x + c * inner, y + s * inner, SCAN_HEIGHT])
-            ends.append([x + c * reach, y + s * reach, SCAN_HEIGHT])
-        hits = p.rayTestBatch(starts, ends, physicsClientId=self._cid)
+        angles = yaw + np.arange(beams) * (2 * math.pi / beams)
+        c, s = np.cos(angles), np.sin(angles)
+        height = np.full(beams, SCAN_HEIGHT)
+        starts = np.stack([x + c * inner, y + s * inner, height], axis=1).tolist()
+        ends = np.stack([x + c * reach, y + s * reach, height], axis=1).tolist()
+        hits = p.rayTestBatch(starts, ends, numThreads=1, physicsClientId=self._cid)
+        body = np.fromiter((h[0] for h in hits), dtype=int, count=beams)
+        fraction = np.fromiter((h[2] for h in hits), dtype=float, count=beams)
         noise = self._scan_rng.normal(0.0, SCAN_NOISE, beams)
-        out = []
-        for (body, _link, fraction, _pos, _normal), e in zip(hits, noise, strict=True):
-            out.append(reach if body < 0 else round(min(reach, inner + fraction * (reach - inner) + e), 4))
-        return out
+        ranges = np.minimum(reach, inner + fraction * (reach - inner) + noise).round(4)
+        return [float(r) for r in np.where(body < 0, reach, ranges)]
 
     # Teams of tens: the leash is kept once per control tick, not every physics step (one pybullet
     # call a step instead of two), so a blocked light robot may lead its body by a tick's travel.

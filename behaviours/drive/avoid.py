@@ -10,7 +10,7 @@ from typing import Any
 Point = tuple[float, float]
 Near = list[tuple[float, float, float]]
 JAMMED_S, DETOUR_S = 1.0, 2.0
-STALLED_S, PROGRESS = 4.0, 0.1  # no PROGRESS metres nearer the goal in STALLED_S seconds: stalled
+STALLED_S, PROGRESS = 10.0, 0.3  # no PROGRESS metres nearer the goal in STALLED_S seconds: stalled
 
 
 @dataclass

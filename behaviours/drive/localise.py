@@ -20,8 +20,8 @@ import numpy as np
 from behaviours.approach.frames import wrap
 
 Pose = tuple[float, float, float]
-BEAMS, REACH = 90, 20.0  # a full turn every 4 degrees, 20 m (a Hokuyo UTM-30LX reaches 30 m)
-SCAN_EVERY = 0.25  # seconds between scans
+BEAMS, REACH = 60, 20.0  # a full turn every 6 degrees, 20 m (a Hokuyo UTM-30LX reaches 30 m)
+SCAN_EVERY = 0.5  # seconds between scans
 GATES = (0.1, 0.05, 0.03)  # metres per metre of range, per Gauss-Newton step: a yaw error moves far
 GATE_FLOOR, GATE_CAP = 0.1, 0.8  # points more; plus this, at most that
 MIN_POINTS = 6  # beams on walls needed to correct at all
