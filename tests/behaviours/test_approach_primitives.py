@@ -98,16 +98,19 @@ def test_position_to_centre_of_table_side_from_a_corner(tmp_path: Path) -> None:
     assert abs(place.depth - (0.17 - 0.35)) < 0.04
 
 
-def test_go_to_the_lifting_point_puts_the_hands_under_the_edge(tmp_path: Path) -> None:
-    sc = scene(tmp_path, {"r1": at_table(0.0, 0.35)})
-    probe = machine(tmp_path, """\
+STEP_IN_AND_LIFT = """\
 doc: step in, then try a small lift
 outcomes: [held, not_held, lost]
 timer: 60
 states:
   step_in: {do: go_to_the_lifting_point, on: {at_lifting_point: lift, lost: lost}}
   lift: {do: lift_check, on: {held: held, not_held: not_held}}
-""")
+"""
+
+
+def test_go_to_the_lifting_point_puts_the_hands_under_the_edge(tmp_path: Path) -> None:
+    sc = scene(tmp_path, {"r1": at_table(0.0, 0.35)})
+    probe = machine(tmp_path, STEP_IN_AND_LIFT)
     result, _, judged = run_machine(probe, sc, 0)
     assert result.agents["r1"].outcome == "held"
     assert 0.03 < judged["placements"]["r1"].depth < 0.1
@@ -119,14 +122,7 @@ def test_go_to_the_lifting_point_is_not_fooled_by_a_short_tables_legs(tmp_path: 
     put on the plane of the top, look like an edge 0.12 m ahead; the robot must step in to the
     real edge all the same (a held-back room: the pair lifted nothing, 11 times)."""
     sc = scene(tmp_path, {"r1": at_table(0.0, 0.35, half_width=0.2)}, length=0.6, width=0.4)
-    probe = machine(tmp_path, """\
-doc: step in, then try a small lift
-outcomes: [held, not_held, lost]
-timer: 60
-states:
-  step_in: {do: go_to_the_lifting_point, on: {at_lifting_point: lift, lost: lost}}
-  lift: {do: lift_check, on: {held: held, not_held: not_held}}
-""")
+    probe = machine(tmp_path, STEP_IN_AND_LIFT)
     result, _, _ = run_machine(probe, sc, 0)
     assert result.agents["r1"].outcome == "held"
 
