@@ -164,7 +164,7 @@ def lines_for(results: list[Result], command: str, wall: float, workers: int, lo
     out = [
         "### Results",
         "",
-        f"`nice -n 10 .venv/bin/python {command}`: {len(results)} rooms in {wall / 60:.1f} min wall with "
+        f"`.venv/bin/python {command}`: {len(results)} rooms in {wall / 60:.1f} min wall with "
         f"{workers} worker processes on the shared 2-core machine (`uptime` before the run: {load}). "
         "Rooms are drawn from the seed (tools/room/scenes.py: size, tables of 0.7-1.0 x 0.45-0.55 m at "
         "headings 0/90/180/270, a pair beside each table, the other robots free, claimed walls that cross "
