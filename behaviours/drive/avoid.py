@@ -11,6 +11,7 @@ Point = tuple[float, float]
 Near = list[tuple[float, float, float]]
 JAMMED_S, DETOUR_S = 1.0, 2.0
 STALLED_S, PROGRESS = 10.0, 0.3  # no PROGRESS metres nearer the goal in STALLED_S seconds: stalled
+CLOSING = 4.0  # m/s of approach allowed per metre a thing sensed is beyond the clearance
 
 
 @dataclass
@@ -62,9 +63,11 @@ class Detour:
 
 
 def dodge(velocity: Point, seen: list[Point], clearance: float, speed: float) -> Point:
-    """`velocity` (room frame) bent around the obstacles `seen` (points relative to the robot, room
-    frame) nearer than `clearance`: a slide past each (`_side`), faster the nearer it is, then no
-    motion towards any (none at all when that cannot be had). At most `speed` m/s."""
+    """`velocity` (room frame) braked towards what is seen beyond the clearance (`brake`), then bent
+    around the obstacles `seen` (points relative to the robot, room frame) nearer than `clearance`:
+    a slide past each (`_side`), faster the nearer it is, then no motion towards any (none at all
+    when that cannot be had). At most `speed` m/s."""
+    velocity = brake(velocity, seen, clearance)
     near = []
     for ox, oy in seen:
         gap = math.hypot(ox, oy)
@@ -80,6 +83,29 @@ def dodge(velocity: Point, seen: list[Point], clearance: float, speed: float) ->
         vx, vy = _away_from(near, (uy - ux) * speed / 2, (-ux - uy) * speed / 2)
     pace = math.hypot(vx, vy)
     return (vx / pace * speed, vy / pace * speed) if pace > speed else (vx, vy)
+
+
+def brake(velocity: Point, seen: list[Point], clearance: float) -> Point:
+    """`velocity` with its approach to each thing `seen` beyond `clearance` (gap metres away) at most
+    CLOSING * (gap - clearance) m/s: a robot closes on what it senses no faster than it can stop at
+    the clearance within 1/CLOSING s, whatever its top speed, so that two robots crossing fast, each
+    braking so, never cover the clearance in a tick or two (sliding past stays free)."""
+    vx, vy = velocity
+    for ox, oy in sorted(seen, key=lambda q: math.hypot(*q)):
+        gap = math.hypot(ox, oy)
+        if gap >= clearance:
+            ux, uy = ox / gap, oy / gap
+            towards = vx * ux + vy * uy
+            over = towards - CLOSING * (gap - clearance)
+            if over > 0.0:
+                pace = math.hypot(vx, vy)
+                side = uy * vx - ux * vy  # > 0: the way goes to its right
+                rx, ry = (uy, -ux) if side >= 0.0 else (-uy, ux)
+                vx, vy = vx - over * ux, vy - over * uy
+                slide = math.sqrt(max(pace * pace - (towards - over) ** 2, 0.0))
+                along = vx * rx + vy * ry
+                vx, vy = vx + (slide - along) * rx, vy + (slide - along) * ry
+    return (vx, vy)
 
 
 def _side(ux: float, uy: float, near: Near, velocity: Point) -> float:

@@ -7,7 +7,8 @@ import math
 from hypothesis import given
 from hypothesis import strategies as st
 
-from behaviours.drive.avoid import Detour, dodge
+from behaviours.drive.avoid import CLOSING, Detour, brake, dodge
+from behaviours.drive.goto import heading
 
 coord = st.floats(-1.0, 1.0, allow_nan=False)
 points = st.lists(st.tuples(coord, coord).filter(lambda p: math.hypot(*p) > 0.05), max_size=5)
@@ -67,3 +68,46 @@ def test_rocking_at_the_clearance_of_two_posts_before_its_goal_it_goes_round() -
     goal = (4.7, -3.4)
     end = _walk(Detour(), (0.0, 0.0), goal, posts, 60.0)
     assert math.dist(end, goal) < 0.1
+
+
+@given(st.tuples(coord, coord), points)
+def test_it_closes_on_what_it_senses_no_faster_than_it_can_stop_at_the_clearance(
+        velocity: tuple[float, float], seen: list[tuple[float, float]]) -> None:
+    one = [p for p in seen[:1] if math.hypot(*p) >= 0.3]
+    vx, vy = brake(velocity, one, 0.3)
+    assert math.hypot(vx, vy) <= math.hypot(*velocity) + 1e-9
+    for ox, oy in one:
+        gap = math.hypot(ox, oy)
+        assert (vx * ox + vy * oy) / gap <= CLOSING * (gap - 0.3) + 1e-9
+
+
+def test_two_robots_crossing_fast_never_touch() -> None:
+    """Two round robots (radius 0.15) at 2 m/s, 20 Hz, each sensing the other's nearest point and
+    driving as go_to drives, their bodies taking a few ticks to reach a new velocity (each tick 30 %
+    of the last), their straight ways crossing at right angles (the bench's Figure 7 at 2.0 m/s):
+    their centres stay more than 0.3 m apart; dodging only within the clearance, they touch."""
+    def closest(brakes: bool) -> float:
+        here = {"a": (-1.0, 0.0), "b": (0.0, -1.0)}
+        goal = {"a": (1.0, 0.0), "b": (0.0, 1.0)}
+        detours = {"a": Detour(), "b": Detour()}
+        moving = {"a": (0.0, 0.0), "b": (0.0, 0.0)}
+        nearest = math.inf
+        for tick in range(60):
+            step = {}
+            for me, other in (("a", "b"), ("b", "a")):
+                (x, y), (px, py) = here[me], here[other]
+                wanted = heading((x, y, 0.0), goal[me], 2.0, [], 0.3)
+                gap = math.dist((x, y), (px, py))
+                seen = [((px - x) * (gap - 0.15) / gap, (py - y) * (gap - 0.15) / gap)] if gap - 0.15 < 1.0 else []
+                if seen and not brakes:
+                    seen = [p for p in seen if math.hypot(*p) < 0.3]  # as it was: only the clearance
+                v = detours[me].steer(tick * 0.05, wanted, seen, 0.3, 2.0, math.dist((x, y), goal[me])) \
+                    if seen else wanted
+                v = moving[me] = (0.3 * moving[me][0] + 0.7 * v[0], 0.3 * moving[me][1] + 0.7 * v[1])
+                step[me] = (x + v[0] * 0.05, y + v[1] * 0.05)
+            here = step
+            nearest = min(nearest, math.dist(here["a"], here["b"]))
+        return nearest
+
+    assert closest(brakes=True) > 0.3
+    assert closest(brakes=False) < 0.3
