@@ -146,7 +146,7 @@ def main(argv: list[str] | None = None) -> int:
     if not saved.get("reruns"):  # the whole bench's wall time, not a part's
         write_section(args.perf, "tararc_bench", [
             f"`{command}`: {len(results)} trials of machines/tararc.yaml (10 to 50 light robots) in "
-            f"{wall / 60:.1f} min wall with {saved['workers']} worker processes, under `nice -n 10` on the "
+            f"{wall / 60:.1f} min wall with {saved['workers']} worker processes on the "
             "shared 2-core machine (target: under 20 minutes on 2 cores); results in docs/TARARC.md."])
     print("\n".join(lines))
     print(f"wrote {args.doc} and {args.figures} ({wall / 60:.1f} min)", file=sys.stderr)
