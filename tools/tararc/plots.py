@@ -33,7 +33,8 @@ def curve_plot(points: Sequence[Point], every: Sequence[Point], path: Path, *, x
     ax.set_ylim(bottom=0)
     ax.set_title(title, fontsize=10)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8, loc="upper left")
+    if every or points:
+        ax.legend(fontsize=8, loc="upper left")
     fig.text(0.01, 0.01, f"paper: {paper}", fontsize=7, wrap=True)
     fig.subplots_adjust(bottom=0.2)
     _save(fig, path)
