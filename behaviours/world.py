@@ -31,7 +31,7 @@ class SimWorldFactory:
     def add_arguments(self, group: argparse._ArgumentGroup) -> None:
         group.add_argument(
             "--scenario",
-            default=DEFAULT_SCENARIO,
+            default=None,
             metavar="NAME|FILE",
             help=f"a shipped scenario or a scenario file (default {DEFAULT_SCENARIO})",
         )
@@ -69,12 +69,20 @@ class SimWorldFactory:
             help="print the simulated time every S seconds (0: never; default 60)",
         )
 
+    def check(self, args: argparse.Namespace) -> None:
+        """`--check` with `--scenario`: the scenario is read and checked too (the simulator is
+        imported only then; the default scenario ships checked)."""
+        if args.scenario is not None:
+            from behaviours.simworld import load_scenario
+
+            load_scenario(args.scenario)
+
     def create(self, args: argparse.Namespace, seed: int) -> SimWorld:
         from behaviours.simworld import SimWorld, load_scenario
         from sim import World
         from sim.recorder import Recorder
 
-        scenario, name = load_scenario(args.scenario)
+        scenario, name = load_scenario(args.scenario or DEFAULT_SCENARIO)
         size = args.image_size
         stem = args.out / default_stem(name, seed, args.radio_loss, args.radio_latency)
         video = None if args.no_video else args.video or stem.with_suffix(".mp4")

@@ -88,6 +88,9 @@ class WorldFactory(Protocol):
 
     def create(self, args: argparse.Namespace, seed: int) -> World: ...
 
+    # Optional: `check(args) -> None`, called by `hfsm-run --check` to check the world's own
+    # flags (e.g. a scenario file) without making the world; raises UsageError.
+
 
 class PerfectRadio:
     """Every message arrives at the start of the tick after it was sent, in sending order."""

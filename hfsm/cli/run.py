@@ -126,6 +126,11 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
     if args.check:
         if args.param or args.history:  # the params given are checked too
             top_params(args.param, args.history, top, registry)
+        name = _world_name(args, loaded, registry)
+        check = getattr(factories.get(name), "check", None)  # a world's own flags, if it checks them
+        if check is not None:
+            with stdout_to_stderr():
+                check(args)
         print(f"{args.file}: ok ({len(loaded.machines)} machines checked)", file=sys.stderr)
         return 0
     params = top_params(args.param, args.history, top, registry)
@@ -175,15 +180,20 @@ def _inputs(args: argparse.Namespace, loaded: Loaded) -> list[Path]:
 def _world(
     args: argparse.Namespace, loaded: Loaded, registry: Registry, factories: dict[str, WorldFactory]
 ) -> World:
-    needs = worlds_needed(loaded.machines, registry)
-    name = args.world or (needs[0] if needs else "none")
-    wrong = [w for w in needs if w != name]
-    if wrong:
-        raise UsageError(f"these machines call primitives of --world {wrong[0]}, not --world {name}")
+    name = _world_name(args, loaded, registry)
     if name == "none":
         return NullWorld()
     with stdout_to_stderr():
         return factories[name].create(args, args.seed)
+
+
+def _world_name(args: argparse.Namespace, loaded: Loaded, registry: Registry) -> str:
+    needs = worlds_needed(loaded.machines, registry)
+    name: str = args.world or (needs[0] if needs else "none")
+    wrong = [w for w in needs if w != name]
+    if wrong:
+        raise UsageError(f"these machines call primitives of --world {wrong[0]}, not --world {name}")
+    return name
 
 
 def _agents(args: argparse.Namespace, world: World) -> list[str]:

@@ -74,6 +74,18 @@ def test_bad_params(machine: Machine, capsys: pytest.CaptureFixture[str], arg: s
     assert code == 2 and text in err
 
 
+def test_check_checks_the_scenario_given(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    top = str(ROOT / "machines" / "clear_room.yaml")
+    code, _, err = run(capsys, top, "--scenario", "room_3_tabels", "--check")
+    assert code == 2 and "did you mean 'room_3_tables'?" in err
+    bad = tmp_path / "room.yaml"
+    bad.write_text("room: {width: 3, depth: -2}\n", encoding="utf-8")
+    code, _, err = run(capsys, top, "--scenario", str(bad), "--check")
+    assert code == 2 and f"{bad}:1:25: error[E200]: 'depth' must be > 1.5" in err
+    assert f"{bad}:1:1: error[E200]: missing required key 'robots'" in err  # every error at once
+    assert run(capsys, top, "--scenario", "room_3_tables", "--check")[0] == 0
+
+
 def test_check_and_strict(machine: Machine, capsys: pytest.CaptureFixture[str]) -> None:
     path = machine(
         "m", "outcomes: [done, never]\nstates:\n  a: {do: wait, with: {seconds: 1}, on: {done: done}}\n"
