@@ -38,6 +38,12 @@ class Rect:
     def axes(self) -> list[Point]:
         return [(self.ux, self.uy), (-self.uy, self.ux)]
 
+    def contains(self, p: Point, margin: float = 0.0) -> bool:
+        """Whether `p` lies within `margin` m of the rectangle (on or inside the grown one)."""
+        dx, dy = p[0] - self.cx, p[1] - self.cy
+        along, across = dx * self.ux + dy * self.uy, -dx * self.uy + dy * self.ux
+        return abs(along) <= self.half_length + margin and abs(across) <= self.half_width + margin
+
 
 def overlap(a: Rect, b: Rect) -> bool:
     """Whether two oriented rectangles overlap (separating axes)."""
@@ -83,9 +89,11 @@ def way(table: Mapping[str, Any], sign: int, width: float, depth: float, reach: 
     return Way(str(table["id"]), sign, round(travel, 6), toward, corridor)
 
 
-def footprint(table: Mapping[str, Any], reach: float) -> Rect:
+def footprint(table: Mapping[str, Any], reach: float, at: Point | None = None) -> Rect:
+    """The table's top grown by `reach` each side, where it stands (or at `at`, heading unchanged)."""
     yaw = math.radians(float(table.get("yaw", 0.0)))
-    return Rect(float(table["x"]), float(table["y"]), math.cos(yaw), math.sin(yaw),
+    x, y = at if at is not None else (float(table["x"]), float(table["y"]))
+    return Rect(x, y, math.cos(yaw), math.sin(yaw),
                 float(table.get("length", 0.8)) / 2 + reach, float(table.get("width", 0.5)) / 2 + reach)
 
 

@@ -48,20 +48,15 @@ class Scene:
     corridors: tuple[Rect, ...] = ()
     robots: tuple[Point, ...] = ()
 
-    def inside(self, p: Point, rect: Rect, margin: float) -> bool:
-        dx, dy = p[0] - rect.cx, p[1] - rect.cy
-        along, across = dx * rect.ux + dy * rect.uy, -dx * rect.uy + dy * rect.ux
-        return abs(along) <= rect.half_length + margin and abs(across) <= rect.half_width + margin
-
     def blocked(self, p: Point) -> bool:
         if abs(p[0]) > self.width / 2 - BODY or abs(p[1]) > self.depth / 2 - BODY:
             return True
-        if any(self.inside(p, t, BODY) for t in self.tables):
+        if any(t.contains(p, BODY) for t in self.tables):
             return True
         return any(math.dist(p, r) < KEEP for r in self.robots)
 
     def in_corridor(self, p: Point) -> bool:
-        return any(self.inside(p, c, 0.0) for c in self.corridors)
+        return any(c.contains(p) for c in self.corridors)
 
 
 def table_where(table: Mapping[str, Any], done: bool, seen: Sequence[float] | None) -> Point:
@@ -72,12 +67,6 @@ def table_where(table: Mapping[str, Any], done: bool, seen: Sequence[float] | No
     if seen is not None:
         return (float(seen[0]), float(seen[1]))
     return (float(table["x"]), float(table["y"]))
-
-
-def top(table: Mapping[str, Any], at: Point) -> Rect:
-    yaw = math.radians(float(table.get("yaw", 0.0)))
-    return Rect(at[0], at[1], math.cos(yaw), math.sin(yaw), float(table.get("length", 0.8)) / 2,
-                float(table.get("width", 0.5)) / 2)
 
 
 def corridor(table: Mapping[str, Any], width: float, depth: float, reach: float = 0.5) -> Rect:
@@ -137,7 +126,8 @@ def _samples(a: Point, b: Point, step: float = 0.1) -> list[Point]:
 def _cost(points: Sequence[Point], scene: Scene) -> float:
     total = 0.0
     for a, b in itertools.pairwise(points):
-        for p, q in zip(_samples(a, b), _samples(a, b)[1:], strict=False):
+        samples = _samples(a, b)
+        for p, q in itertools.pairwise(samples):
             mid = ((p[0] + q[0]) / 2, (p[1] + q[1]) / 2)
             total += math.dist(p, q) * (CORRIDOR if scene.in_corridor(mid) else 1.0)
     return total

@@ -5,8 +5,10 @@ radio. Pure of any world: walking it is go_along's."""
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Any
 
+from behaviours.room.claims import footprint
 from behaviours.room.frames import to_local, to_room
 from behaviours.room.walks import (
     Point,
@@ -17,7 +19,6 @@ from behaviours.room.walks import (
     place_for,
     plan_walk,
     table_where,
-    top,
 )
 from hfsm.primitive import Context, Outcome, primitive
 
@@ -32,7 +33,7 @@ def _scene(tables: dict[str, Any], done: list[Any], seen: dict[str, Any], robots
     for tid, t in sorted(tables.items()):
         sight = seen.get(tid)
         at = table_where(t, tid in finished, [sight["x"], sight["y"]] if sight else None)
-        tops.append(top(t, at))
+        tops.append(footprint(t, 0.0, at))
         if tid not in finished:
             lanes.append(corridor(t, width, depth))
     return Scene(width, depth, tuple(tops), tuple(lanes), tuple(robots))
@@ -64,7 +65,7 @@ def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
     # the table walked to is not in the way of its own place
     rest = {k: v for k, v in tables.items() if k != str(job["table"])}
     scene = _scene(rest, done or [], seen or {}, others, room)
-    scene = Scene(scene.width, scene.depth, (*scene.tables, top(table, at)), scene.corridors, scene.robots)
+    scene = replace(scene, tables=(*scene.tables, footprint(table, 0.0, at)))
     points = plan_walk(scene, me, goal) or [goal]
     return Outcome("walk", path=[to_local(start, p) for p in points], face=to_local(start, at),
                    walk=[[round(p[0], 4), round(p[1], 4)] for p in [me, *points]])

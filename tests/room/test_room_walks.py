@@ -8,7 +8,7 @@ import math
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from behaviours.room.claims import Rect
+from behaviours.room.claims import Rect, footprint
 from behaviours.room.walks import (
     HALF,
     KEEP,
@@ -20,7 +20,6 @@ from behaviours.room.walks import (
     places,
     plan_walk,
     shorten,
-    top,
 )
 
 TABLE = {"id": "table1", "x": 0.0, "y": 0.0, "yaw": 0, "length": 0.8, "width": 0.5, "toward": [3.5, 0.0]}
@@ -41,14 +40,14 @@ def test_the_place_taken_is_the_free_side_then_the_nearer() -> None:
 
 
 def test_a_way_goes_round_a_table_in_between() -> None:
-    scene = Scene(7.0, 5.0, (top(TABLE, (0.0, 0.0)),))
+    scene = Scene(7.0, 5.0, (footprint(TABLE, 0.0, (0.0, 0.0)),))
     path = plan_walk(scene, (-2.0, 0.0), (2.0, 0.0))
     assert path is not None and path[-1] == (2.0, 0.0) and len(path) >= 2
     whole = [(-2.0, 0.0), *path]
     for a, b in itertools.pairwise(whole):
         for k in range(21):
             p = (a[0] + (b[0] - a[0]) * k / 20, a[1] + (b[1] - a[1]) * k / 20)
-            assert not scene.inside(p, scene.tables[0], 0.3)
+            assert not scene.tables[0].contains(p, 0.3)
 
 
 def test_a_way_keeps_off_a_robot_standing_still_and_a_corridor_costs_more() -> None:
