@@ -32,7 +32,7 @@ sys.path.insert(0, str(ROOT))
 from tools.room.experiments import QUICK, Config, trials  # noqa: E402
 from tools.room.report import write  # noqa: E402
 from tools.room.trials import run_room_trial  # noqa: E402
-from tools.sweep import SweepError, add_executor_args, run_sweep  # noqa: E402
+from tools.sweep import SweepError, add_executor_args, add_results_args, run_sweep, save_results  # noqa: E402
 
 
 def run_bench(config: Config, executor: str = "local", workers: int = 2, only: set[int] | None = None
@@ -76,10 +76,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--trials", help="only these trial indices of the campaign, comma-separated")
     p.add_argument("--first-seed", type=int, default=1)
     add_executor_args(p)
-    p.add_argument("--doc", type=Path, default=ROOT / "docs" / "ROOM.md")
-    p.add_argument("--figures", type=Path, default=ROOT / "docs" / "figures" / "room")
-    p.add_argument("--raw", type=Path, default=ROOT / "docs" / "results" / "room.json")
-    p.add_argument("--from", dest="saved", type=Path, help="no run: write the docs again from a --raw file")
+    add_results_args(p, "room", "ROOM.md")
     args = p.parse_args(argv)
     config = replace(QUICK if args.quick else Config(), first_seed=args.first_seed)
     numbers: dict[str, Any] = {"target_rooms": args.rooms, "kn_seeds": args.kn_seeds,
@@ -104,8 +101,7 @@ def main(argv: list[str] | None = None) -> int:
         command = " ".join(["tools/room_bench.py", *(argv if argv is not None else sys.argv[1:])])
         saved = {"command": command, "wall": time.perf_counter() - started, "workers": args.workers,
                  "load": load, "commit": commit, "results": results}
-        args.raw.parent.mkdir(parents=True, exist_ok=True)
-        args.raw.write_text(json.dumps(saved, indent=1) + "\n", encoding="utf-8")
+        save_results(args.raw, saved)
     lines = write(saved["results"], args.doc, args.figures, saved["command"], saved["wall"], saved["workers"],
                   f"{saved['load']}; at commit {saved.get('commit', '?')}")
     print("\n".join(lines))

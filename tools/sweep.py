@@ -57,6 +57,23 @@ class Shard:
 
 
 
+def add_results_args(parser: argparse.ArgumentParser, name: str, doc: str) -> None:
+    """The options of a bench that writes a doc: its section's file, its figures, its raw results,
+    or `--from` a raw file, writing the docs again without running."""
+    docs = Path(__file__).resolve().parent.parent / "docs"
+    parser.add_argument("--doc", type=Path, default=docs / doc)
+    parser.add_argument("--figures", type=Path, default=docs / "figures" / name)
+    parser.add_argument("--raw", type=Path, default=docs / "results" / f"{name}.json")
+    parser.add_argument("--from", dest="saved", type=Path,
+                        help="no run: write the docs again from a --raw file")
+
+
+def save_results(path: Path, saved: dict[str, Any]) -> None:
+    """A bench's raw results, as `--from` reads them."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps(saved, indent=1) + "\n", encoding="utf-8")
+
+
 def add_executor_args(parser: argparse.ArgumentParser) -> None:
     """The options every sweep shares: where its trials run."""
     parser.add_argument("--workers", type=int, default=2, help="local processes (with --executor local)")

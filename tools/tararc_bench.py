@@ -31,7 +31,17 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from tools.docsection import write_section  # noqa: E402
-from tools.sweep import Shard, SweepError, add_executor_args, merge_shards, run_sweep, shard_path, write_shard  # noqa: E402
+from tools.sweep import (  # noqa: E402
+    Shard,
+    SweepError,
+    add_executor_args,
+    add_results_args,
+    merge_shards,
+    run_sweep,
+    save_results,
+    shard_path,
+    write_shard,
+)
 from tools.tararc.experiments import EXPERIMENTS, QUICK, Config, help_trials, main_trials  # noqa: E402
 from tools.tararc.report import write  # noqa: E402
 from tools.tararc.trials import BenchTrial, run_bench_trial  # noqa: E402
@@ -88,12 +98,9 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--sizes", help="team sizes of Figure 6, comma-separated (default 10,20,30,40,50)")
     p.add_argument("--first-seed", type=int, default=1)
     add_executor_args(p)
-    p.add_argument("--doc", type=Path, default=ROOT / "docs" / "TARARC.md")
-    p.add_argument("--figures", type=Path, default=ROOT / "docs" / "figures" / "tararc")
-    p.add_argument("--raw", type=Path, default=ROOT / "docs" / "results" / "tararc.json")
+    add_results_args(p, "tararc", "TARARC.md")
     p.add_argument("--perf", type=Path, default=ROOT / "docs" / "PERFORMANCE.md",
                    help="where the bench's wall time is also written")
-    p.add_argument("--from", dest="saved", type=Path, help="no run: write the docs again from a --raw file")
     p.add_argument("--shard", type=Shard.parse, help="run shard I of N (I/N) of the first stage, to --shards")
     p.add_argument("--merge", action="store_true", help="read the first stage from --shards, run the rest")
     p.add_argument("--only", type=lambda text: text.split(","), metavar="EXP[,EXP]",
@@ -123,7 +130,7 @@ def main(argv: list[str] | None = None) -> int:
         trials = sum(r["experiment"] in args.only for r in saved["results"])
         saved.setdefault("reruns", []).append(
             {"command": command, "trials": trials, "wall": round(time.perf_counter() - started, 1)})
-        args.raw.write_text(json.dumps(saved, indent=1) + "\n", encoding="utf-8")
+        save_results(args.raw, saved)
     else:
         started = time.perf_counter()
         try:
@@ -139,8 +146,7 @@ def main(argv: list[str] | None = None) -> int:
             return 2
         saved = {"command": command, "wall": time.perf_counter() - started, "workers": args.workers,
                  "results": results}
-        args.raw.parent.mkdir(parents=True, exist_ok=True)
-        args.raw.write_text(json.dumps(saved, indent=1) + "\n", encoding="utf-8")
+        save_results(args.raw, saved)
     command, wall, results = saved["command"], saved["wall"], saved["results"]
     lines = write(results, args.doc, args.figures, command, wall, len(results), saved.get("reruns", []))
     if not saved.get("reruns"):  # the whole bench's wall time, not a part's
