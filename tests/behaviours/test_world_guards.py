@@ -71,18 +71,24 @@ def test_a_written_video_and_picture_close_quietly(tmp_path: Path) -> None:
     assert (tmp_path / "v.mp4").stat().st_size > 0 and (tmp_path / "v.png").stat().st_size > 0
 
 
-def test_a_scenarios_numbers_out_of_range_are_exit_2_with_value_and_range_all_at_once(
-    capsys: pytest.CaptureFixture[str], tmp_path: Path
-) -> None:
+def scenario_errors(capsys: pytest.CaptureFixture[str], tmp_path: Path, text: str) -> list[str]:
+    """A run of the paper's machine on a scenario file of `text`: exit 2, no traceback, and its
+    errors, each from the line and column on."""
     scenario = tmp_path / "room.yaml"
-    scenario.write_text(
-        "robots:\n  r1: {x: 1, y: 1, speed: 0}\n  r2: {x: -1, y: -1, speed: 4}\n"
-        "jitter: {position: -1}\nroom: {width: 60}\nbattery: {idle: 1.5}\n"
-    )
+    scenario.write_text(text)
     code = main([str(ROOT / "machines" / "move_furniture.yaml"), "--scenario", str(scenario), "--no-video"])
     err = capsys.readouterr().err
     assert code == 2 and "Traceback" not in err
-    assert [line.split("room.yaml:")[1] for line in err.splitlines() if "room.yaml:" in line] == [
+    return [line.split("room.yaml:")[1] for line in err.splitlines() if "room.yaml:" in line]
+
+
+def test_a_scenarios_numbers_out_of_range_are_exit_2_with_value_and_range_all_at_once(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    assert scenario_errors(capsys, tmp_path, (
+        "robots:\n  r1: {x: 1, y: 1, speed: 0}\n  r2: {x: -1, y: -1, speed: 4}\n"
+        "jitter: {position: -1}\nroom: {width: 60}\nbattery: {idle: 1.5}\n"
+    )) == [
         "2:27: error[E200]: 'speed' must be > 0 and <= 3, not 0 (top speed, m/s (default: the body's))",
         "3:29: error[E200]: 'speed' must be > 0 and <= 3, not 4 (top speed, m/s (default: the body's))",
         "4:20: error[E200]: 'position' must be >= 0 and <= 1, not -1 (max offset per axis, metres)",
@@ -94,15 +100,10 @@ def test_a_scenarios_numbers_out_of_range_are_exit_2_with_value_and_range_all_at
 def test_a_scenarios_room_checks_are_exit_2_at_each_value_all_at_once(
     capsys: pytest.CaptureFixture[str], tmp_path: Path
 ) -> None:
-    scenario = tmp_path / "room.yaml"
-    scenario.write_text(
+    assert scenario_errors(capsys, tmp_path, (
         "table: {x: 9}\ntargets:\n  - {id: table1, x: 7, y: 0}\n"
         "robots:\n  r1: {x: 2.4, y: 0}\n  r2: {x: 0, y: -9}\njitter: {position: 0.1}\n"
-    )
-    code = main([str(ROOT / "machines" / "move_furniture.yaml"), "--scenario", str(scenario), "--no-video"])
-    err = capsys.readouterr().err
-    assert code == 2 and "Traceback" not in err
-    assert [line.split("room.yaml:")[1] for line in err.splitlines() if "room.yaml:" in line] == [
+    )) == [
         "1:12: error[E200]: 'x' must be from -2.1 to 2.1 for the table (0.8 x 0.5 m, yaw 0) to fit inside "
         "the room (5 x 5 m), not 9",
         "3:10: error[E200]: task id 'table1' is used before: ids must be unique across tables and targets",
