@@ -6,10 +6,14 @@ STAMP := $(VENV)/.installed
 
 .PHONY: run test lint figures clean
 
-$(STAMP): pyproject.toml
+# Installs exactly the versions the tests passed with: requirements.lock (hashes, Python 3.11 on
+# Linux x86_64), then this project without its dependencies. pyproject.toml keeps ranges for people
+# who install hfsm into an environment of their own; `make lock` re-resolves them (a deliberate
+# change, with its own commit), `make test-latest` runs the suite against the newest versions.
+$(STAMP): pyproject.toml requirements.lock
 	$(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e '.[dev]'
+	$(BIN)/python -m pip install --quiet --require-hashes --no-deps -r requirements.lock
+	$(BIN)/python -m pip install --quiet --no-deps --no-build-isolation -e .
 	touch $(STAMP)
 
 run: $(STAMP)
@@ -26,11 +30,11 @@ test: $(STAMP) $(CHROMIUM)
 	$(BIN)/python -m pytest
 
 lint: $(STAMP)
-	$(BIN)/ruff check hfsm behaviours sim tools tests
-	$(BIN)/mypy -p hfsm -p behaviours -p sim
+	$(BIN)/ruff check hfsm hfsm_behaviours hfsm_sim tools tests
+	$(BIN)/mypy -p hfsm -p hfsm_behaviours -p hfsm_sim
 
 clean:
-	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache
+	rm -rf $(VENV) $(LATEST) .pytest_cache .mypy_cache .ruff_cache
 
 # Diagrams of machines/ and examples/ (SVG for people, DOT for the staleness test): see docs/GRAPH.md.
 figures: $(STAMP)
@@ -38,13 +42,27 @@ figures: $(STAMP)
 	$(BIN)/hfsm-graph examples -o docs/figures/examples --format svg,dot --no-legend --prune
 	$(BIN)/hfsm-graph tests/diagram/data/search.yaml --depth 2 -o docs/figures/depth --format svg,dot --no-legend --no-overview --prune
 
-# Primitives' declarations, read without importing the simulator: see behaviours/registry.py.
+# Primitives' declarations, read without importing the simulator: see hfsm_behaviours/registry.py.
 .PHONY: declarations
 declarations: $(STAMP)
-	$(BIN)/python -m hfsm.declarations behaviours.registry:primitives > behaviours/primitives.json
+	$(BIN)/python -m hfsm.declarations hfsm_behaviours.registry:primitives > hfsm_behaviours/primitives.json
 
 # Engine against its peers (transitions, python-statemachine, sismic, a dict floor): see docs/PERFORMANCE.md.
 .PHONY: bench
 bench: $(STAMP)
 	$(BIN)/python -m pip install --quiet -r tools/bench-requirements.txt
 	$(BIN)/python tools/bench_engine.py
+
+.PHONY: lock test-latest
+lock: $(STAMP)
+	$(BIN)/uv pip compile pyproject.toml --extra dev --generate-hashes --upgrade --python-version 3.11 \
+		--python-platform x86_64-manylinux_2_28 --no-header --annotation-style line -o requirements.lock
+
+LATEST := .venv-latest
+test-latest: $(CHROMIUM)
+	rm -rf $(LATEST)
+	$(PYTHON) -m venv $(LATEST)
+	$(LATEST)/bin/python -m pip install --quiet --upgrade pip
+	$(LATEST)/bin/python -m pip install --quiet --upgrade -e '.[dev]'
+	$(LATEST)/bin/python -m pip list --format=freeze > $(LATEST)/versions.txt
+	$(LATEST)/bin/python -m pytest

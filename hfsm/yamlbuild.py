@@ -47,6 +47,7 @@ class _Frame:
     key: Any = _NO_KEY
     anchor: str | None = None
     log_start: int = 0
+    flow: bool = False  # written [ ] or { }
 
 
 @dataclass
@@ -155,7 +156,7 @@ class EventBuilder:
             self._place(event, value, pos)
             return
         value = self._collection(event, cls is _MAP_START, pos)
-        frame = _Frame(value, self._place(event, value, pos), cls is _SEQ_START)
+        frame = _Frame(value, self._place(event, value, pos), cls is _SEQ_START, flow=bool(event.flow_style))
         if event.anchor is not None and not replay:
             frame.anchor, frame.log_start = event.anchor, len(self.log) - 1
             self.recording += 1
@@ -226,6 +227,10 @@ class EventBuilder:
             self.anchors[frame.anchor] = _Ref(frame.log_start, len(self.log))
         if not self.stack:
             self.done = True
+
+    def block_depth(self) -> int:
+        """Collections open now that are written as blocks (indented), not in brackets."""
+        return sum(not frame.flow for frame in self.stack)
 
     def _collection(self, event: Any, is_map: bool, pos: Pos) -> dict[Any, Any] | list[Any]:
         if len(self.stack) >= MAX_DEPTH:

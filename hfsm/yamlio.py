@@ -106,6 +106,9 @@ def parse_text(text: str, file: str) -> Document:
             _drive(parser, builder, file)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
+        deep = _too_deep(text, builder.block_depth(), mark.index if mark else len(text))
+        if deep is not None:
+            raise UserError([Finding(file, *deep, "E106", f"collections nested more than {MAX_DEPTH} deep")]) from None
         line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
         message = " ".join(str(p) for p in (exc.context, exc.problem) if p)
         extra = hint(message, text.splitlines(), line, col)
@@ -130,6 +133,32 @@ def parse_text(text: str, file: str) -> Document:
         raise UserError(built.errors)
     doc.data, doc.keys, doc.values = built.data, built.keys, built.values
     return doc
+
+
+def _too_deep(text: str, blocks: int, end: int) -> Pos | None:
+    """Where brackets nest past MAX_DEPTH (with `blocks` indented collections around them) before
+    `end`: the parser's own nesting limit may be met first, but ours is the one reported."""
+    depth, quote, i = 0, "", 0
+    while i < min(end + 1, len(text)):
+        char = text[i]
+        if quote:
+            if char == "\\" and quote == '"':
+                i += 1
+            elif char == quote:
+                quote = ""
+        elif char in "[{":
+            depth += 1
+            if blocks + depth > MAX_DEPTH:
+                return _line_col(text, i)
+        elif char in "]}":
+            depth = max(0, depth - 1)
+        elif char in "'\"" and (i == 0 or text[i - 1] in " \t\n[{,:"):
+            quote = char
+        elif char == "#" and (i == 0 or text[i - 1] in " \t\n"):
+            newline = text.find("\n", i)
+            i = len(text) if newline < 0 else newline
+        i += 1
+    return None
 
 
 def _line_col(text: str, index: int) -> Pos:

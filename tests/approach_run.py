@@ -9,15 +9,15 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from behaviours.simworld import SimWorld
+from hfsm_behaviours.simworld import SimWorld
 from hfsm.load import load
 from hfsm.primitive import Context, primitive
 from hfsm.registry import Registry
 from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, RunResult, run
 from hfsm.trace import ListTrace
-from sim import World, load_scenario
-from sim.profile import DEFAULT_BODY
+from hfsm_sim import World, load_scenario
+from hfsm_sim.profile import DEFAULT_BODY
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "tests" / "behaviours" / "data"

@@ -9,14 +9,14 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from behaviours.simworld import SimWorld
+from hfsm_behaviours.simworld import SimWorld
 from hfsm.load import load
 from hfsm.registry import Registry
 from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, RunResult, run
 from hfsm.trace import ListTrace
-from sim import World, load_scenario, scenario_from_dict
-from sim.profile import DEFAULT_BODY
+from hfsm_sim import World, load_scenario, scenario_from_dict
+from hfsm_sim.profile import DEFAULT_BODY
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "tests" / "behaviours" / "data" / "carry"

@@ -10,15 +10,15 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from behaviours.room import frames
-from behaviours.simworld import SimWorld
+from hfsm_behaviours.room import frames
+from hfsm_behaviours.simworld import SimWorld
 from hfsm.load import load
 from hfsm.registry import Registry
 from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, run
 from hfsm.trace import TraceSink
-from sim import World, load_scenario
-from sim.scenario import FailureAt, Scenario
+from hfsm_sim import World, load_scenario
+from hfsm_sim.scenario import FailureAt, Scenario
 
 ROOT = Path(__file__).resolve().parents[1]
 TOP = ROOT / "machines" / "move_furniture.yaml"

@@ -5,9 +5,9 @@ from __future__ import annotations
 
 import math
 
-from sim.perception import TableSeen
-from sim.scenario import scenario_from_dict
-from sim.world import World
+from hfsm_sim.perception import TableSeen
+from hfsm_sim.scenario import scenario_from_dict
+from hfsm_sim.world import World
 
 Truth = tuple[float, float, float, float, float]
 # (x, y, yaw degrees, length, width) in the world; r1 starts at (0, -1.4) facing +y

@@ -45,7 +45,7 @@ def test_wheels_run_the_task_and_the_template_from_any_folder(tmp_path: Path) ->
     assert installed.returncode == 0, installed.stderr
     elsewhere = tmp_path / "elsewhere"
     elsewhere.mkdir()
-    where = sh(python, "-c", "import hfsm.cli.run, behaviours.registry as b; print(hfsm.cli.run.__file__, b.machines())",
+    where = sh(python, "-c", "import hfsm.cli.run, hfsm_behaviours.registry as b; print(hfsm.cli.run.__file__, b.machines())",
                cwd=elsewhere)
     assert where.stdout.count(str(site)) == 2, where.stdout
 

@@ -69,9 +69,9 @@ def measure(sizes: list[int], repeats: int, old: Path | None) -> list[Row]:
 
 
 def checkout(rev: str, into: Path) -> Path:
-    """hfsm, behaviours and sim as they were at `rev`, unpacked into `into`."""
+    """hfsm, hfsm_behaviours and hfsm_sim as they were at `rev`, unpacked into `into`."""
     archive = subprocess.run(
-        ["git", "-C", str(ROOT), "archive", rev, "hfsm", "behaviours", "sim"], capture_output=True, check=True
+        ["git", "-C", str(ROOT), "archive", rev, "hfsm", "hfsm_behaviours", "hfsm_sim"], capture_output=True, check=True
     )
     subprocess.run(["tar", "-x", "-C", str(into)], input=archive.stdout, check=True)
     return into

@@ -30,9 +30,9 @@ for folder in (ROOT, ROOT / "tools"):
 
 from docsection import write_section  # noqa: E402
 
-from sim.robot import Robot  # noqa: E402
-from sim.scenario import Scenario, load_scenario, resolve, scenario_from_dict  # noqa: E402
-from sim.world import World  # noqa: E402
+from hfsm_sim.robot import Robot  # noqa: E402
+from hfsm_sim.scenario import Scenario, load_scenario, resolve, scenario_from_dict  # noqa: E402
+from hfsm_sim.world import World  # noqa: E402
 
 TICK = 0.05
 FULL = {2: "opposite_long_side", 8: "team_8", 16: "team_16"}

@@ -18,9 +18,9 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from sim.recorder import Recorder  # noqa: E402
-from sim.scenario import load_scenario  # noqa: E402
-from sim.world import World  # noqa: E402
+from hfsm_sim.recorder import Recorder  # noqa: E402
+from hfsm_sim.scenario import load_scenario  # noqa: E402
+from hfsm_sim.world import World  # noqa: E402
 from tools.docsection import write_section  # noqa: E402
 from tools.paper.reference import SCENARIOS  # noqa: E402
 

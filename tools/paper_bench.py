@@ -19,7 +19,7 @@ from typing import Any
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from behaviours.trial import TrialSpec, run_trial_dict  # noqa: E402
+from hfsm_behaviours.trial import TrialSpec, run_trial_dict  # noqa: E402
 from tools.paper.reference import SCENARIOS  # noqa: E402
 from tools.paper.report import write_report  # noqa: E402
 from tools.sweep import Shard, SweepError, add_executor_args, merge_shards, run_sweep, shard_path, write_shard  # noqa: E402

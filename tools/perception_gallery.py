@@ -1,4 +1,4 @@
-"""What the robots see: render a few forward and down views, annotate what sim.perception
+"""What the robots see: render a few forward and down views, annotate what hfsm_sim.perception
 finds, write PNGs to docs/perception/, and (with --time) time each perception call.
 
 Usage: .venv/bin/python tools/perception_gallery.py [--size 320x240] [--out docs/perception]
@@ -26,7 +26,7 @@ ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-from sim.perception import (  # noqa: E402
+from hfsm_sim.perception import (  # noqa: E402
     DEFAULT_CONFIG,
     Blob,
     CameraModel,
@@ -38,9 +38,9 @@ from sim.perception import (  # noqa: E402
     table_rect,
     wall_to_side,
 )
-from sim.robot import Robot  # noqa: E402
-from sim.scenario import scenario_from_dict  # noqa: E402
-from sim.world import World  # noqa: E402
+from hfsm_sim.robot import Robot  # noqa: E402
+from hfsm_sim.scenario import scenario_from_dict  # noqa: E402
+from hfsm_sim.world import World  # noqa: E402
 
 Colour = tuple[int, int, int]
 Tables = list[dict[str, float]]

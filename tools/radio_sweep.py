@@ -20,7 +20,7 @@ from typing import Any
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from behaviours.trial import TrialSpec, run_trial_dict  # noqa: E402
+from hfsm_behaviours.trial import TrialSpec, run_trial_dict  # noqa: E402
 from tools.docsection import write_section  # noqa: E402
 from tools.paper.reference import SCENARIOS  # noqa: E402
 from tools.paper.results import succeeded  # noqa: E402

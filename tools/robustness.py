@@ -23,7 +23,7 @@ import yaml
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from behaviours.trial import TrialSpec  # noqa: E402
+from hfsm_behaviours.trial import TrialSpec  # noqa: E402
 from tools.docsection import write_section  # noqa: E402
 from tools.paper.results import succeeded  # noqa: E402
 from tools.paper_bench import add_sweep_args, campaign, radio  # noqa: E402

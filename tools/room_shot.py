@@ -15,7 +15,7 @@ from pathlib import Path
 import cv2
 import numpy as np
 
-EVERY = 0.5  # simulated seconds between two frames (sim.recorder's default)
+EVERY = 0.5  # simulated seconds between two frames (hfsm_sim.recorder's default)
 
 
 def frames(video: Path, seconds: list[float]) -> list[np.ndarray]:

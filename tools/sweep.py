@@ -5,7 +5,7 @@
     run_sweep(fn, specs, shard=Shard(1, 4))                # trials 0, 4, 8, ... (batch schedulers)
 
 `fn` takes one spec and returns a JSON-able dict; it must be importable by the workers (a function
-of an installed package, such as `behaviours.trial.run_trial_dict`). Every result carries its trial
+of an installed package, such as `hfsm_behaviours.trial.run_trial_dict`). Every result carries its trial
 index and results come back sorted by it, so a sweep gives the same results on 1 process, 2
 processes or a cluster: seeds come from the specs, never from the worker.
 

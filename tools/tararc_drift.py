@@ -6,7 +6,7 @@ Runs Figure 6's trial (`tools/tararc/scenes.py`, `--robots` robots, 3 targets fo
 machines/tararc.yaml, as the bench does, then reads the simulator's truth (a measurement, never
 given to the robots) and prints, at the end of the run, each robot's error of position: of the
 pose the behaviours drive by (odometry corrected by the laser against the room,
-behaviours/drive/localise.py) and of its raw odometry alone.
+hfsm_behaviours/drive/localise.py) and of its raw odometry alone.
 """
 
 from __future__ import annotations
@@ -23,12 +23,12 @@ import yaml
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from behaviours.simworld import SimWorld, load_scenario  # noqa: E402
+from hfsm_behaviours.simworld import SimWorld, load_scenario  # noqa: E402
 from hfsm.load import load  # noqa: E402
 from hfsm.registry import Registry  # noqa: E402
 from hfsm.runtime.program import Program, machine_params  # noqa: E402
 from hfsm.runtime.run import RunOptions, run  # noqa: E402
-from sim import World  # noqa: E402
+from hfsm_sim import World  # noqa: E402
 from tools.tararc.measure import Timeline, measure  # noqa: E402
 from tools.tararc.scenes import scene  # noqa: E402
 

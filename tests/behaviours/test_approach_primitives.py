@@ -9,8 +9,8 @@ from typing import Any
 import yaml
 from approach_run import placement, run_machine
 
-from sim import World, scenario_from_dict
-from sim.perception.table_rect import fit_rect, outline_points
+from hfsm_sim import World, scenario_from_dict
+from hfsm_sim.perception.table_rect import fit_rect, outline_points
 
 TABLE_YAW = 20.0  # degrees: the scenes' table is turned so nothing lines up with the axes
 

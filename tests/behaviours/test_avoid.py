@@ -7,8 +7,8 @@ import math
 from hypothesis import given
 from hypothesis import strategies as st
 
-from behaviours.drive.avoid import CLOSING, Detour, brake, dodge
-from behaviours.drive.goto import heading
+from hfsm_behaviours.drive.avoid import CLOSING, Detour, brake, dodge
+from hfsm_behaviours.drive.goto import heading
 
 coord = st.floats(-1.0, 1.0, allow_nan=False)
 points = st.lists(st.tuples(coord, coord).filter(lambda p: math.hypot(*p) > 0.05), max_size=5)
@@ -42,7 +42,7 @@ def _walk(detour: Detour | None, start: tuple[float, float], goal: tuple[float, 
           posts: list[tuple[float, float]], seconds: float) -> tuple[float, float]:
     """A point robot (radius 0.15) driven as go_to drives, round posts of radius 0.15 it senses
     within 1 m (nearest points), at 0.5 m/s and 20 Hz; where it is after `seconds`."""
-    from behaviours.drive.goto import heading
+    from hfsm_behaviours.drive.goto import heading
 
     x, y = start
     for tick in range(round(seconds / 0.05)):

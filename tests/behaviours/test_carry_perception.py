@@ -1,4 +1,4 @@
-"""sim.perception (edge, reach, walls) against ground truth: the near edge, the table's reach to each side,
+"""hfsm_sim.perception (edge, reach, walls) against ground truth: the near edge, the table's reach to each side,
 the wall to each side, from a robot standing at the table as the carry leaves it."""
 
 from __future__ import annotations
@@ -9,8 +9,8 @@ from collections.abc import Iterator
 import pytest
 from carry_scene import GRIP_Y, TABLE_X, at_table
 
-from sim import World, scenario_from_dict
-from sim.perception import near_edge, side_extent, wall_to_side
+from hfsm_sim import World, scenario_from_dict
+from hfsm_sim.perception import near_edge, side_extent, wall_to_side
 
 # (along m, away m, turned deg) from square at grip depth
 POSES = [(0.0, 0.0, 0.0), (0.1, 0.02, 7.0), (-0.1, -0.01, -7.0), (0.05, 0.03, 15.0)]

@@ -29,8 +29,8 @@ import yaml
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from behaviours.room.claims import claim_walls, crossings  # noqa: E402
-from sim.scenario import scenario_from_dict  # noqa: E402
+from hfsm_behaviours.room.claims import claim_walls, crossings  # noqa: E402
+from hfsm_sim.scenario import scenario_from_dict  # noqa: E402
 from tools.room.scenes import REACH  # noqa: E402
 from tools.room.trials import RoomTrial, run_room_trial  # noqa: E402
 

@@ -1,10 +1,10 @@
-"""behaviours/primitives.json says what the primitives themselves say, and a run finds them."""
+"""hfsm_behaviours/primitives.json says what the primitives themselves say, and a run finds them."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
-from behaviours.registry import DECLARATIONS, primitives
+from hfsm_behaviours.registry import DECLARATIONS, primitives
 from hfsm import declarations
 from hfsm.registry import Registry
 
@@ -12,7 +12,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_the_declarations_file_is_fresh() -> None:
-    shipped = (ROOT / "behaviours" / DECLARATIONS).read_text(encoding="utf-8")
+    shipped = (ROOT / "hfsm_behaviours" / DECLARATIONS).read_text(encoding="utf-8")
     assert shipped == declarations.dumps(primitives()), "stale: run `make declarations`"
 
 

@@ -1,4 +1,4 @@
-"""Localisation against the known room (behaviours/drive/localise.py), world-free: scans cast
+"""Localisation against the known room (hfsm_behaviours/drive/localise.py), world-free: scans cast
 against a rectangle by hand, with clutter, and the pose estimate they correct."""
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from behaviours.drive.localise import MAX_STEP, Fix, correct
+from hfsm_behaviours.drive.localise import MAX_STEP, Fix, correct
 
 ROOM = (12.0, 9.0)
 
@@ -85,9 +85,9 @@ def test_the_fix_takes_odometry_to_the_estimate(odom: tuple[float, float, float]
 def test_in_the_simulator_a_light_robot_knows_where_it_is_after_a_long_walk() -> None:
     """30 m of circling: odometry alone drifts (seeded scale errors, yaw drift); the estimate the
     behaviours drive by, corrected by the laser against the room, stays on the robot."""
-    from behaviours.simworld import SimWorld
-    from sim.scenario import scenario_from_dict
-    from sim.world import World
+    from hfsm_behaviours.simworld import SimWorld
+    from hfsm_sim.scenario import scenario_from_dict
+    from hfsm_sim.world import World
 
     data = {"room": {"width": 8.0, "depth": 6.0}, "tables": [],
             "robots": {"r1": {"x": 0.0, "y": -1.0, "yaw": 0, "body": "light"},

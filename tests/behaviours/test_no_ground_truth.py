@@ -1,4 +1,4 @@
-"""Robots behave on what they sense: behaviours/ and machines/ never reach the simulator's ground truth."""
+"""Robots behave on what they sense: hfsm_behaviours/ and machines/ never reach the simulator's ground truth."""
 
 from __future__ import annotations
 
@@ -11,18 +11,18 @@ ROOT = Path(__file__).resolve().parents[2]
 ADAPTERS = {"world.py", "simworld.py", "trial.py"}  # the world seam: it holds the World to step and score it
 FORBIDDEN_MODULES = (
     "pybullet",
-    "sim.world",
-    "sim.truth",
-    "sim.scorer",
-    "sim.body",
-    "sim.lifting",
-    "sim.room",
+    "hfsm_sim.world",
+    "hfsm_sim.truth",
+    "hfsm_sim.scorer",
+    "hfsm_sim.body",
+    "hfsm_sim.lifting",
+    "hfsm_sim.room",
 )
 FORBIDDEN_NAMES = {"truth", "score", "getBasePositionAndOrientation", "client", "scenario"}
 
 
 def behaviour_files() -> list[Path]:
-    return [p for p in sorted((ROOT / "behaviours").rglob("*.py")) if p.name not in ADAPTERS]
+    return [p for p in sorted((ROOT / "hfsm_behaviours").rglob("*.py")) if p.name not in ADAPTERS]
 
 
 @pytest.mark.parametrize("path", behaviour_files(), ids=lambda p: str(p.relative_to(ROOT)))

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from behaviours.trial import TrialSpec, run_trial
+from hfsm_behaviours.trial import TrialSpec, run_trial
 
 ROOT = Path(__file__).resolve().parents[2]
 MACHINE = str(ROOT / "machines" / "move_furniture.yaml")

@@ -9,7 +9,7 @@ import math
 import pytest
 from room_run import run_pairs, to_room
 
-from sim import load_scenario
+from hfsm_sim import load_scenario
 
 
 @pytest.mark.slow

@@ -9,8 +9,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from behaviours.carry.wall import room_to_wall
-from sim.perception import WallSeen
+from hfsm_behaviours.carry.wall import room_to_wall
+from hfsm_sim.perception import WallSeen
 
 
 def wall_at(distance: float, normal_deg: float) -> WallSeen:

@@ -1,5 +1,5 @@
 """Colours repeat beyond ten robots: looking for the leader by its colour and its table
-(`behaviours.approach.sight.scan_for_robot`), a robot of that colour far from the table seen first
+(`hfsm_behaviours.approach.sight.scan_for_robot`), a robot of that colour far from the table seen first
 is passed over for one near it; judged without a world (the views are given)."""
 
 from __future__ import annotations
@@ -8,8 +8,8 @@ from typing import Any
 
 import pytest
 
-from behaviours.approach import sight
-from behaviours.approach.sight import NO_ROBOT, RobotSighting, scan_for_robot
+from hfsm_behaviours.approach import sight
+from hfsm_behaviours.approach.sight import NO_ROBOT, RobotSighting, scan_for_robot
 
 TABLE = (2.0, 0.0)
 LEADER = RobotSighting(True, (2.0, 0.6), 0.3, 2.1)

@@ -10,9 +10,9 @@ from pathlib import Path
 import pytest
 from helpers import hfsm_run
 
-from behaviours.tararc.formulas import EnergyModel, energy
-from sim.battery import Battery
-from sim.specs import Eq5Battery
+from hfsm_behaviours.tararc.formulas import EnergyModel, energy
+from hfsm_sim.battery import Battery
+from hfsm_sim.specs import Eq5Battery
 
 Machine = Callable[[str, str], Path]
 

@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 from pydantic import ValidationError
 
-from behaviours.world import default_stem
+from hfsm_behaviours.world import default_stem
 from hfsm.cli.run import main
-from sim.recorder import Recorder
-from sim.scenario import scenario_from_dict
+from hfsm_sim.recorder import Recorder
+from hfsm_sim.scenario import scenario_from_dict
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from behaviours.registry import primitives
+from hfsm_behaviours.registry import primitives
 from hfsm.builtins import BUILTINS
 from hfsm.cli.run import main
 

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-HEAVY = ("pybullet", "cv2", "numpy", "sim", "behaviours.approach", "behaviours.carry")
+HEAVY = ("pybullet", "cv2", "numpy", "hfsm_sim", "hfsm_behaviours.approach", "hfsm_behaviours.carry")
 PROBE = """
 import json, sys
 from {module} import main

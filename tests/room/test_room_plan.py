@@ -1,4 +1,4 @@
-"""The room's pure code: frames, claimed walls, pairs and help (behaviours/room)."""
+"""The room's pure code: frames, claimed walls, pairs and help (hfsm_behaviours/room)."""
 
 from __future__ import annotations
 
@@ -10,9 +10,9 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from behaviours.room.claims import Rect, claim_walls, overlap
-from behaviours.room.frames import at_wall, difficulty_of, relocalise, to_local, to_room
-from behaviours.room.plan import groups_after, job_of, make_room_plan, slide_of, sliding_partners, tables_of
+from hfsm_behaviours.room.claims import Rect, claim_walls, overlap
+from hfsm_behaviours.room.frames import at_wall, difficulty_of, relocalise, to_local, to_room
+from hfsm_behaviours.room.plan import groups_after, job_of, make_room_plan, slide_of, sliding_partners, tables_of
 
 ROOM = {"width": 7.0, "depth": 5.0}
 TASKS = [

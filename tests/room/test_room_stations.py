@@ -1,4 +1,4 @@
-"""Grouping ties in a room (behaviours/room/stations.py): with no history, pairs stand at their tables."""
+"""Grouping ties in a room (hfsm_behaviours/room/stations.py): with no history, pairs stand at their tables."""
 
 from __future__ import annotations
 
@@ -7,10 +7,10 @@ import math
 from hypothesis import given
 from hypothesis import strategies as st
 
-from behaviours.room.plan import job_of, make_room_plan
-from behaviours.room.stations import room_ties, stations
-from behaviours.tararc.grouping import Group, Robot
-from behaviours.tararc.help import lend
+from hfsm_behaviours.room.plan import job_of, make_room_plan
+from hfsm_behaviours.room.stations import room_ties, stations
+from hfsm_behaviours.tararc.grouping import Group, Robot
+from hfsm_behaviours.tararc.help import lend
 
 
 @given(st.integers(2, 5), st.integers(0, 3), st.permutations(list(range(13))), st.integers(0, 3))

@@ -1,4 +1,4 @@
-"""Walks to a table (behaviours/room/walks.py): the place, the way round what stands, the right of way."""
+"""Walks to a table (hfsm_behaviours/room/walks.py): the place, the way round what stands, the right of way."""
 
 from __future__ import annotations
 
@@ -8,8 +8,8 @@ import math
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from behaviours.room.claims import Rect, footprint
-from behaviours.room.walks import (
+from hfsm_behaviours.room.claims import Rect, footprint
+from hfsm_behaviours.room.walks import (
     HALF,
     KEEP,
     Scene,

@@ -5,8 +5,8 @@ from typing import Any
 
 import pytest
 
-from sim.scenario import Scenario, scenario_from_dict
-from sim.world import World
+from hfsm_sim.scenario import Scenario, scenario_from_dict
+from hfsm_sim.world import World
 
 
 def make_scenario(robots: dict[str, dict[str, float]], **extra: Any) -> Scenario:

@@ -6,7 +6,7 @@ from collections.abc import Callable
 import numpy as np
 import pytest
 
-from sim.world import World
+from hfsm_sim.world import World
 
 FACING_TABLE = {"r1": {"x": -1.0, "y": 0.0, "yaw": 0.0}}
 

@@ -8,7 +8,7 @@ from collections.abc import Callable
 
 import pytest
 
-from sim.world import World
+from hfsm_sim.world import World
 
 # the 0.8 m table turned 30 degrees, its +x end 0.33 m from the wall at x = 2 (4 x 4 m room)
 YAW = 30.0

@@ -5,7 +5,7 @@ from collections.abc import Callable
 
 import pytest
 
-from sim.world import World
+from hfsm_sim.world import World
 
 ACROSS = {"r1": {"x": 0.0, "y": -0.34, "yaw": 90.0}, "r2": {"x": 0.0, "y": 0.34, "yaw": -90.0}}
 

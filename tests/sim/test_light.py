@@ -9,10 +9,10 @@ from typing import Any
 
 import pytest
 
-from sim.light import LightRobot
-from sim.robot import Robot
-from sim.scenario import scenario_from_dict
-from sim.world import World
+from hfsm_sim.light import LightRobot
+from hfsm_sim.robot import Robot
+from hfsm_sim.scenario import scenario_from_dict
+from hfsm_sim.world import World
 
 
 @pytest.fixture

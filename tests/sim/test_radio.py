@@ -4,7 +4,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from sim.radio import Radio
+from hfsm_sim.radio import Radio
 
 times = st.lists(st.floats(min_value=0.0, max_value=100.0, allow_nan=False), min_size=1,
                  max_size=30)

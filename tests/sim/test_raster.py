@@ -12,11 +12,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from sim.camera import TinyRenderer, world_camera
-from sim.raster import SKY, Rasteriser, _spans
-from sim.robot import Robot
-from sim.room import _static_box
-from sim.world import World
+from hfsm_sim.camera import TinyRenderer, world_camera
+from hfsm_sim.raster import SKY, Rasteriser, _spans
+from hfsm_sim.robot import Robot
+from hfsm_sim.room import _static_box
+from hfsm_sim.world import World
 
 TWO = {"r1": {"x": -1.0, "y": -0.3, "yaw": 20.0}, "r2": {"x": 1.0, "y": 0.4, "yaw": 200.0}}
 

@@ -4,9 +4,9 @@ from pathlib import Path
 
 import cv2
 
-from sim.recorder import Recorder
-from sim.scenario import load_scenario
-from sim.world import World
+from hfsm_sim.recorder import Recorder
+from hfsm_sim.scenario import load_scenario
+from hfsm_sim.world import World
 
 
 def test_mp4_and_final_png(tmp_path: Path) -> None:

@@ -5,7 +5,7 @@ from collections.abc import Callable
 
 import pytest
 
-from sim.world import World
+from hfsm_sim.world import World
 
 ALONE = {"r1": {"x": -1.0, "y": -1.0, "yaw": 0.0}}
 

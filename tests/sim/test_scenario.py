@@ -7,7 +7,7 @@ import pytest
 import yaml
 from pydantic import ValidationError
 
-from sim.scenario import (
+from hfsm_sim.scenario import (
     DEFAULT_SCENARIO,
     Scenario,
     load_scenario,

@@ -4,7 +4,7 @@ from collections.abc import Callable
 
 import pytest
 
-from sim.world import World
+from hfsm_sim.world import World
 
 FAR = {"r1": {"x": -1.5, "y": -1.5, "yaw": 0.0}}
 

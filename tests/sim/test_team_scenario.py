@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from pydantic import ValidationError
 
-from sim.scenario import (
+from hfsm_sim.scenario import (
     Eq5Battery,
     FailureRate,
     LinearBattery,

@@ -5,8 +5,8 @@ from collections.abc import Callable
 import pybullet as p
 import pytest
 
-from sim.scenario import load_scenario
-from sim.world import World
+from hfsm_sim.scenario import load_scenario
+from hfsm_sim.world import World
 
 
 def test_advance_counts_whole_physics_steps(world_factory: Callable[..., World]) -> None:

@@ -8,7 +8,7 @@ import math
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from behaviours.tararc.formation import assign, enclose, form_places, radius
+from hfsm_behaviours.tararc.formation import assign, enclose, form_places, radius
 
 BOX = ((-20.0, -20.0), (20.0, 20.0))
 

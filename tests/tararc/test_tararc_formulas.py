@@ -6,7 +6,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from behaviours.tararc.formulas import (
+from hfsm_behaviours.tararc.formulas import (
     Coefficients,
     EnergyModel,
     belief,

@@ -2,8 +2,8 @@
 
 import pytest
 
-from behaviours.tararc.allocation import Task, compete
-from behaviours.tararc.grouping import Group, Robot, elect, form_groups, greedy_groups, group_size, pair
+from hfsm_behaviours.tararc.allocation import Task, compete
+from hfsm_behaviours.tararc.grouping import Group, Robot, elect, form_groups, greedy_groups, group_size, pair
 
 
 def rel(**pairs: float) -> dict[tuple[str, str], float]:

@@ -4,8 +4,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from behaviours.tararc.grouping import Group, Robot
-from behaviours.tararc.help import HandOver, Transfer, apply_transfers, hand_over, lend
+from hfsm_behaviours.tararc.grouping import Group, Robot
+from hfsm_behaviours.tararc.help import HandOver, Transfer, apply_transfers, hand_over, lend
 
 
 def test_7a_a_tired_agent_hands_over_to_the_highest_belief() -> None:

@@ -6,8 +6,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from behaviours.tararc.history import History, Record, p_term, record_run, relevance_matrix
-from behaviours.tararc.history_file import HistoryError, dumps, load, loads, save
+from hfsm_behaviours.tararc.history import History, Record, p_term, record_run, relevance_matrix
+from hfsm_behaviours.tararc.history_file import HistoryError, dumps, load, loads, save
 
 
 def test_record_run_counts_pairs_and_robots() -> None:
@@ -140,7 +140,7 @@ def test_save_keeps_the_files_permissions(tmp_path: Path) -> None:
 
 
 def test_problems_before_a_run(tmp_path: Path) -> None:
-    from behaviours.tararc.history_file import problems
+    from hfsm_behaviours.tararc.history_file import problems
 
     assert problems("") == [] and problems(str(tmp_path / "first.json")) == []
     assert problems(str(tmp_path / "no" / "h.json"))[0][:3] == (str(tmp_path / "no" / "h.json"), 1, 1)

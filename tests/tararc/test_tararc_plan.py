@@ -8,9 +8,9 @@ from typing import Any
 
 import pytest
 
-from behaviours.tararc.history import History, Record
-from behaviours.tararc.outcome import group_outcomes, merge_into, record_team
-from behaviours.tararc.plan import after_losses, history_of, key_of, make_plan, record_of, role_of
+from hfsm_behaviours.tararc.history import History, Record
+from hfsm_behaviours.tararc.outcome import group_outcomes, merge_into, record_team
+from hfsm_behaviours.tararc.plan import after_losses, history_of, key_of, make_plan, record_of, role_of
 
 TASKS = [{"id": "east", "x": 6, "y": 0, "difficulty": 0.5, "priority": 1},
          {"id": "west", "x": -6, "y": 0, "difficulty": 0.8, "priority": 2}]

@@ -7,10 +7,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from behaviours.tararc.allocation import Task
-from behaviours.tararc.grouping import Group, Robot, form_groups, pair
-from behaviours.tararc.history import History, Record, record_run
-from behaviours.tararc.team import allocate
+from hfsm_behaviours.tararc.allocation import Task
+from hfsm_behaviours.tararc.grouping import Group, Robot, form_groups, pair
+from hfsm_behaviours.tararc.history import History, Record, record_run
+from hfsm_behaviours.tararc.team import allocate
 
 
 @dataclass(frozen=True)

@@ -10,8 +10,8 @@ from typing import Any
 import pytest
 from tararc_runs import case, decisions, run_plan
 
-from behaviours.tararc.history import History, Record
-from behaviours.tararc.history_file import dumps, load, save
+from hfsm_behaviours.tararc.history import History, Record
+from hfsm_behaviours.tararc.history_file import dumps, load, save
 from hfsm.runtime.run import RunResult
 from hfsm.testing.model import FailAt
 

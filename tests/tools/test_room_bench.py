@@ -11,8 +11,8 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from behaviours.room.claims import claim_walls, crossings  # noqa: E402
-from sim.scenario import scenario_from_dict  # noqa: E402
+from hfsm_behaviours.room.claims import claim_walls, crossings  # noqa: E402
+from hfsm_sim.scenario import scenario_from_dict  # noqa: E402
 from tools.room.experiments import QUICK, Config, trials  # noqa: E402
 from tools.room.report import wilson, write  # noqa: E402
 from tools.room.scenes import PAIR_GAP, REACH, room  # noqa: E402

@@ -11,9 +11,9 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from behaviours.tararc.history import History, p_term  # noqa: E402
-from behaviours.tararc.outcome import record_team  # noqa: E402
-from behaviours.tararc.plan import after_losses, history_of, make_plan, record_of  # noqa: E402
+from hfsm_behaviours.tararc.history import History, p_term  # noqa: E402
+from hfsm_behaviours.tararc.outcome import record_team  # noqa: E402
+from hfsm_behaviours.tararc.plan import after_losses, history_of, make_plan, record_of  # noqa: E402
 from tools.tararc.ability import chain, failing_group, follow, group_abilities, match, paper_names  # noqa: E402
 from tools.tararc.report import ability  # noqa: E402
 from tools.tararc.scenes import scene  # noqa: E402

@@ -10,7 +10,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from sim.scenario import scenario_from_dict  # noqa: E402
+from hfsm_sim.scenario import scenario_from_dict  # noqa: E402
 from tools.sweep import Shard, SweepError, run_sweep  # noqa: E402
 from tools.tararc.experiments import Config, help_trials, main_trials  # noqa: E402
 from tools.tararc.measure import Timeline, measure  # noqa: E402

@@ -1,10 +1,10 @@
-"""The bench's rooms, as data for sim/scenario.py: K tables of different sizes, positions and
+"""The bench's rooms, as data for hfsm_sim/scenario.py: K tables of different sizes, positions and
 headings, one pair of humanoids beside each table (on either long side, facing it, as the shipped
 `room_*` scenarios start them), the N - 2K others standing free, all drawn from the seed.
 
 A room is kept only when it can be cleared as machines/clear_room.yaml clears rooms: every table's
 zone (the table and its pair) apart from every other, every table with room to move along its long
-axis, and claimed walls (behaviours.room.claims) whose corridors cross nothing (no other corridor, no
+axis, and claimed walls (hfsm_behaviours.room.claims) whose corridors cross nothing (no other corridor, no
 other table, no robot standing where it starts). Otherwise another room is drawn, from the same
 seeded generator, so a seed always gives the same room.
 """
@@ -15,7 +15,7 @@ import math
 import random
 from typing import Any
 
-from behaviours.room.claims import Rect, claim_walls, crossings, overlap
+from hfsm_behaviours.room.claims import Rect, claim_walls, crossings, overlap
 
 PAIR_GAP = 1.2  # metres from the table's centre line to each robot of its pair (room_3_tables)
 ROBOT = 0.35  # half the side of the square a standing robot is checked as

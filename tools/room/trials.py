@@ -1,5 +1,5 @@
 """One bench trial: a generated room run with machines/clear_room.yaml in the pybullet world (the run
-API hfsm-run uses: behaviours.trial.run_trial), headless, no video, its outcome read off the scorer
+API hfsm-run uses: hfsm_behaviours.trial.run_trial), headless, no video, its outcome read off the scorer
 and the trace only. What sweep workers run."""
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ from typing import Any
 
 import yaml
 
-from behaviours.trial import TrialSpec, run_trial
+from hfsm_behaviours.trial import TrialSpec, run_trial
 
 MACHINE = Path(__file__).resolve().parents[2] / "machines" / "clear_room.yaml"
 CARRY_ENDS = ("finished", "give_up")  # clear_room's states that append to vars.carries

@@ -14,10 +14,10 @@ import itertools
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from behaviours.tararc.formulas import PAPER, Coefficients, belief, efficiency
-from behaviours.tararc.grouping import Robot, distance
-from behaviours.tararc.history import p_term
-from behaviours.tararc.plan import history_of
+from hfsm_behaviours.tararc.formulas import PAPER, Coefficients, belief, efficiency
+from hfsm_behaviours.tararc.grouping import Robot, distance
+from hfsm_behaviours.tararc.history import p_term
+from hfsm_behaviours.tararc.plan import history_of
 
 Plan = Mapping[str, Any]
 

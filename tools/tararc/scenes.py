@@ -1,7 +1,7 @@
-"""The bench's scenarios, as data for sim/scenario.py: light robots on a grid in the left of the
+"""The bench's scenarios, as data for hfsm_sim/scenario.py: light robots on a grid in the left of the
 room, targets on a grid in the right, as in the paper's Figure 2 (robots spread, tasks apart).
 
-With 10 robots and 3 tasks it is `sim/scenarios/alloc_3_tasks.yaml`; `density` packs the robots
+With 10 robots and 3 tasks it is `hfsm_sim/scenarios/alloc_3_tasks.yaml`; `density` packs the robots
 closer (the ratio of areas of the paper's Figure 5), `speed` sets every robot's top speed
 (Figure 7), `robots` grows the team and the room with it at the same density (Figure 6, 3 tasks
 for every 10 robots).

@@ -11,7 +11,7 @@ from typing import Any
 
 import yaml
 
-from behaviours.trial import TrialSpec, run_trial
+from hfsm_behaviours.trial import TrialSpec, run_trial
 from tools.tararc.ability import failing_group, group_abilities
 from tools.tararc.measure import Timeline, measure
 

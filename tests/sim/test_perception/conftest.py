@@ -1,5 +1,5 @@
 """Perception tests: a robot placed in a real sim World, and ground truth to compare with
-(world.truth is used here only, never by sim.perception)."""
+(world.truth is used here only, never by hfsm_sim.perception)."""
 
 from __future__ import annotations
 
@@ -10,9 +10,9 @@ from typing import Any
 import numpy as np
 import pytest
 
-from sim.camera import CameraModel
-from sim.robot import Robot
-from sim.world import World
+from hfsm_sim.camera import CameraModel
+from hfsm_sim.robot import Robot
+from hfsm_sim.world import World
 
 
 class Scene:

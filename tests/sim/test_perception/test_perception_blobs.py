@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from sim.perception import (
+from hfsm_sim.perception import (
     DEFAULT_CONFIG,
     NO_BLOB,
     blob_from_mask,

@@ -9,8 +9,8 @@ import numpy as np
 from hypothesis import given
 from hypothesis import strategies as st
 
-from sim.camera import camera_model, camera_spec
-from sim.profile import DEFAULT_BODY
+from hfsm_sim.camera import camera_model, camera_spec
+from hfsm_sim.profile import DEFAULT_BODY
 
 angles = st.floats(-1.0, 1.0)
 

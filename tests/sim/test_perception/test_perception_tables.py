@@ -12,10 +12,10 @@ from hypothesis import given
 from hypothesis import strategies as st
 from tables_scene import START, TABLES, in_start_frame, matches, three_tables
 
-from sim.perception import PerceptionConfig, components, top_face
-from sim.perception.table_rect import TableRect
-from sim.perception.tables import Piece, TableSeen, group_pieces, pick_table, see_tables
-from sim.world import World
+from hfsm_sim.perception import PerceptionConfig, components, top_face
+from hfsm_sim.perception.table_rect import TableRect
+from hfsm_sim.perception.tables import Piece, TableSeen, group_pieces, pick_table, see_tables
+from hfsm_sim.world import World
 
 HEAD_YAWS = (-0.9, 0.0, 0.9)
 

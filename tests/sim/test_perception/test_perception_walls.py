@@ -7,7 +7,7 @@ from typing import Any
 import numpy as np
 import pytest
 
-from sim.perception import floor_wall_line, wall_to_side
+from hfsm_sim.perception import floor_wall_line, wall_to_side
 
 SceneFactory = Callable[..., Any]
 SIZES = [(160, 120), (640, 480)]

@@ -1,0 +1,87 @@
+"""The parts of Look for table (section 3.1): scan with the head, spin, wander, centre the table."""
+
+from __future__ import annotations
+
+import math
+
+from hfsm_behaviours.approach.frames import bearing_to
+from hfsm_behaviours.approach.sight import ground_distance, named, see_named_table, see_table
+from hfsm_behaviours.body import Body
+from hfsm.primitive import Context, Outcome, primitive
+
+
+@primitive(outcomes=["seen", "not_seen"], outputs=["bearing", "distance"], world="sim")
+def scan_for_table(ctx: Context, *, yaws: list[float] | None = None, pitch: float = 0.3,
+                   table: list[float] | None = None, gate: float = 0.6) -> Outcome:
+    """Turn the head through `yaws` (rad, left +; default left, ahead, right) until the
+    blue table is in view; its bearing (body frame) and ground distance. With a `table`
+    ([x, y], own start frame), only the table seen nearest it within `gate` m counts, and the
+    bearing and distance are to its centre."""
+    body = Body(ctx)
+    target = named(table)
+    for yaw in yaws if yaws is not None else [0.9, 0.0, -0.9]:
+        if target is not None:
+            picked = see_named_table(body, float(yaw), pitch, target, gate)
+            if picked is not None:
+                return Outcome("seen", bearing=bearing_to(body.odometry(), picked.position),
+                               distance=ground_distance(body, picked.position))
+            continue
+        seen = see_table(body, float(yaw), pitch)
+        if seen is not None:
+            return Outcome("seen", bearing=seen.bearing, distance=seen.distance)
+    return Outcome("not_seen")
+
+
+@primitive(outcomes=["done"], world="sim")
+def spin_on_the_spot(ctx: Context, *, degrees: float = 180.0) -> str:
+    """Turn the body on the spot, left positive."""
+    Body(ctx).turn(math.radians(degrees))
+    return "done"
+
+
+@primitive(outcomes=["done", "bumped"], world="sim")
+def walk_randomly(ctx: Context, *, distance: float = 1.0, step: float = 0.25) -> str:
+    """Turn to a random heading (ctx.rng) and walk about `distance` metres; stop on a bump."""
+    body = Body(ctx)
+    body.turn(ctx.rng.uniform(-math.pi, math.pi))
+    walked = 0.0
+    while walked < distance:
+        body.walk(min(step, distance - walked))
+        walked += step
+        if ctx.robot.bumped():
+            body.walk(-step)
+            return "bumped"
+    return "done"
+
+
+@primitive(outcomes=["centred", "lost"], failures=["lost"], outputs=["distance"], world="sim")
+def centre_table(ctx: Context, *, bearing: float = 0.0, pitch: float = 0.3, margin: float = 0.2,
+                 tries: int = 6, table: list[float] | None = None, gate: float = 0.6) -> Outcome:
+    """Turn the body by `bearing`, then until the table's blob sits in the central band
+    (`margin` of the image width); the ground distance to its lowest pixel. With a `table`
+    ([x, y], own start frame): until the centre of the table seen nearest it (within `gate`
+    m) is in that band; the ground distance to that centre."""
+    body = Body(ctx)
+    body.turn(bearing)
+    target = named(table)
+    if target is not None:
+        half_band = math.atan(margin * body.camera().width / 2 / body.camera().fx)
+        for _ in range(tries):
+            picked = see_named_table(body, 0.0, pitch, target, gate)
+            if picked is None:
+                return Outcome("lost")
+            turn = bearing_to(body.odometry(), picked.position)
+            if abs(turn) <= half_band:
+                return Outcome("centred", distance=ground_distance(body, picked.position))
+            body.turn(turn)
+            target = picked.position
+        return Outcome("lost")
+    for _ in range(tries):
+        seen = see_table(body, 0.0, pitch)
+        if seen is None:
+            return Outcome("lost")
+        width = body.camera().width
+        if abs(seen.blob.centroid[0] - width / 2) <= margin * width / 2:
+            return Outcome("centred", distance=seen.distance)
+        body.turn(seen.bearing)
+    return Outcome("lost")

@@ -1,0 +1,207 @@
+"""Walks to a table across the room: where to stand, the way there, and who goes first.
+
+A robot sent to a table it does not stand at (a helper, a spare, a robot lent after its own table)
+walks to a *place* beside that table: the middle of one of its long sides, `GAP` m from its centre
+line, as the pairs start (the side with the fewest robots near it, then the nearer one). The way
+there is a shortest path on a grid of the room (networkx A*) that keeps `BODY` m off the walls,
+`BODY` m off every table's top, `KEEP` m off every robot known to stand still (where it last said it
+was: failed robots, waiting spares, pairs at work), and costs `CORRIDOR` times more inside a table's
+claimed carry corridor (a pair may carry through it). It is then shortened where a straight line
+stays as clear.
+
+Right of way: a walker says its path; two walkers whose paths come within `2 * HALF` m of each
+other do not walk at once: the one that said its walk first (then the smaller id) goes, the other
+waits until it stops saying it (arrived), for a bounded time.
+
+Everything here is pure and in the room's frame.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import networkx as nx
+
+from hfsm_behaviours.room.claims import Rect, way
+from hfsm_behaviours.room.frames import at_wall
+
+Point = tuple[float, float]
+CELL = 0.25  # metres between grid nodes
+BODY = 0.4  # metres from a walker's centre to a wall or a table's top, at least
+KEEP = 0.8  # metres from a walker's centre to a robot standing still, at least
+CORRIDOR = 4.0  # a metre walked in a claimed corridor costs this many
+GAP = 1.2  # metres from a table's centre line to a robot's place beside it
+HALF = 0.45  # half the width of the strip a walker sweeps
+
+
+@dataclass(frozen=True)
+class Scene:
+    """What a walker avoids: the room (centred on 0), tables' tops, claimed corridors, robots."""
+
+    width: float
+    depth: float
+    tables: tuple[Rect, ...] = ()
+    corridors: tuple[Rect, ...] = ()
+    robots: tuple[Point, ...] = ()
+
+    def blocked(self, p: Point) -> bool:
+        if abs(p[0]) > self.width / 2 - BODY or abs(p[1]) > self.depth / 2 - BODY:
+            return True
+        if any(t.contains(p, BODY) for t in self.tables):
+            return True
+        return any(math.dist(p, r) < KEEP for r in self.robots)
+
+    def in_corridor(self, p: Point) -> bool:
+        return any(c.contains(p) for c in self.corridors)
+
+
+def table_where(table: Mapping[str, Any], done: bool, seen: Sequence[float] | None) -> Point:
+    """Where a table is believed to stand: at its wall when done, where a survivor saw it, else its start."""
+    if done:
+        x, y = at_wall(table)
+        return (x, y)
+    if seen is not None:
+        return (float(seen[0]), float(seen[1]))
+    return (float(table["x"]), float(table["y"]))
+
+
+def corridor(table: Mapping[str, Any], width: float, depth: float, reach: float = 0.5) -> Rect:
+    """The claimed corridor of a table (claims.way, the sign that heads for its `toward`)."""
+    yaw = math.radians(float(table.get("yaw", 0.0)))
+    tx, ty = float(table["toward"][0]) - float(table["x"]), float(table["toward"][1]) - float(table["y"])
+    sign = 1 if tx * math.cos(yaw) + ty * math.sin(yaw) >= 0 else -1
+    return way(table, sign, width, depth, reach).corridor
+
+
+def places(table: Mapping[str, Any], at: Point, gap: float = GAP) -> list[Point]:
+    """The two places beside a table standing at `at`: the middles of its long sides, `gap` m out."""
+    yaw = math.radians(float(table.get("yaw", 0.0)))
+    nx_, ny_ = -math.sin(yaw), math.cos(yaw)
+    return [(at[0] + s * gap * nx_, at[1] + s * gap * ny_) for s in (1, -1)]
+
+
+def place_for(table: Mapping[str, Any], at: Point, me: Point, others: Sequence[Point],
+              gap: float = GAP) -> Point:
+    """Of the two places beside the table, the one with fewer robots within `KEEP` m of it (a
+    partner or a failed robot stands at the other), then the nearer one to `me`."""
+    def key(p: Point) -> tuple[int, float]:
+        return (sum(math.dist(p, o) < KEEP for o in others), math.dist(p, me))
+    return min(places(table, at, gap), key=key)
+
+
+def _node(p: Point, scene: Scene) -> tuple[int, int]:
+    return (round((p[0] + scene.width / 2) / CELL), round((p[1] + scene.depth / 2) / CELL))
+
+
+def _point(n: tuple[int, int], scene: Scene) -> Point:
+    return (n[0] * CELL - scene.width / 2, n[1] * CELL - scene.depth / 2)
+
+
+def grid(scene: Scene) -> Any:
+    """The free grid nodes, 8-connected, each edge weighted by its length (times CORRIDOR inside a
+    corridor)."""
+    g = nx.Graph()
+    cols, rows = int(scene.width / CELL) + 1, int(scene.depth / CELL) + 1
+    free = {(i, j) for i in range(cols) for j in range(rows) if not scene.blocked(_point((i, j), scene))}
+    for i, j in sorted(free):
+        for di, dj in ((1, 0), (0, 1), (1, 1), (1, -1)):
+            other = (i + di, j + dj)
+            if other not in free:
+                continue
+            a, b = _point((i, j), scene), _point(other, scene)
+            mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+            g.add_edge((i, j), other, weight=math.dist(a, b) * (CORRIDOR if scene.in_corridor(mid) else 1.0))
+    return g
+
+
+def _samples(a: Point, b: Point, step: float = 0.1) -> list[Point]:
+    n = max(1, math.ceil(math.dist(a, b) / step))
+    return [(a[0] + (b[0] - a[0]) * k / n, a[1] + (b[1] - a[1]) * k / n) for k in range(n + 1)]
+
+
+def _cost(points: Sequence[Point], scene: Scene) -> float:
+    total = 0.0
+    for a, b in itertools.pairwise(points):
+        samples = _samples(a, b)
+        for p, q in itertools.pairwise(samples):
+            mid = ((p[0] + q[0]) / 2, (p[1] + q[1]) / 2)
+            total += math.dist(p, q) * (CORRIDOR if scene.in_corridor(mid) else 1.0)
+    return total
+
+
+def shorten(path: Sequence[Point], scene: Scene) -> list[Point]:
+    """The path with each stretch replaced by a straight line where that line stays clear and costs
+    no more (string pulling)."""
+    if len(path) <= 2:
+        return list(path)
+    out, i = [path[0]], 0
+    while i < len(path) - 1:
+        j = len(path) - 1
+        while j > i + 1:
+            line = _samples(path[i], path[j])
+            if (not any(scene.blocked(p) for p in line[1:-1])
+                    and _cost([path[i], path[j]], scene) <= _cost(path[i:j + 1], scene) + 1e-6):
+                break
+            j -= 1
+        out.append(path[j])
+        i = j
+    return out
+
+
+def plan_walk(scene: Scene, start: Point, goal: Point) -> list[Point] | None:
+    """Waypoints from `start` to `goal` (the first after the start, the goal last), or None when no
+    way is free. A start or goal inside a blocked zone leaves it by its nearest free node."""
+    g = grid(scene)
+    if g.number_of_nodes() == 0:
+        return None
+
+    def nearest(p: Point) -> tuple[int, int]:
+        n = _node(p, scene)
+        if n in g:
+            return n
+        best: tuple[int, int] = min(g.nodes, key=lambda m: (math.dist(_point(m, scene), p), m))
+        return best
+
+    a, b = nearest(start), nearest(goal)
+    try:
+        nodes = nx.astar_path(g, a, b, heuristic=lambda u, v: math.dist(_point(u, scene), _point(v, scene)),
+                              weight="weight")
+    except nx.NetworkXNoPath:
+        return None
+    points = [start, *(_point(n, scene) for n in nodes[1:-1]), goal]
+    return [(round(x, 4), round(y, 4)) for x, y in shorten(points, scene)[1:]]
+
+
+def _segment_gap(a: Point, b: Point, c: Point, d: Point) -> float:
+    """The least distance between segments ab and cd."""
+    def to_segment(p: Point, s: Point, e: Point) -> float:
+        vx, vy = e[0] - s[0], e[1] - s[1]
+        length2 = vx * vx + vy * vy
+        t = 0.0 if length2 == 0 else max(0.0, min(1.0, ((p[0] - s[0]) * vx + (p[1] - s[1]) * vy) / length2))
+        return math.dist(p, (s[0] + t * vx, s[1] + t * vy))
+
+    def crosses() -> bool:
+        def side(p: Point, q: Point, r: Point) -> float:
+            return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
+        return side(a, b, c) * side(a, b, d) < 0 and side(c, d, a) * side(c, d, b) < 0
+
+    if crosses():
+        return 0.0
+    return min(to_segment(a, c, d), to_segment(b, c, d), to_segment(c, a, b), to_segment(d, a, b))
+
+
+def conflict(mine: Sequence[Point], theirs: Sequence[Point], half: float = HALF) -> bool:
+    """Whether two walks (each its start then its waypoints) sweep strips `half` m wide each side
+    that meet."""
+    ours = list(itertools.pairwise(mine)) or [(mine[0], mine[0])]
+    other = list(itertools.pairwise(theirs)) or [(theirs[0], theirs[0])]
+    return any(_segment_gap(a, b, c, d) < 2 * half for a, b in ours for c, d in other)
+
+
+def goes_first(mine: tuple[float, str], theirs: tuple[float, str]) -> bool:
+    """Right of way between two walkers: (when each said its walk first, its id); the smaller goes."""
+    return (round(mine[0], 6), mine[1]) < (round(theirs[0], 6), theirs[1])

@@ -1,0 +1,103 @@
+"""Primitives of a room robot's walk to its table (machines/room_carry.yaml): the way there, planned
+around what the team knows (hfsm_behaviours.room.walks), and the right of way between walkers, over the
+radio. Pure of any world: walking it is go_along's."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from typing import Any
+
+from hfsm_behaviours.room.claims import footprint
+from hfsm_behaviours.room.frames import to_local, to_room
+from hfsm_behaviours.room.walks import (
+    Point,
+    Scene,
+    conflict,
+    corridor,
+    goes_first,
+    place_for,
+    plan_walk,
+    table_where,
+)
+from hfsm.primitive import Context, Outcome, primitive
+
+WALK = "room_walk"
+
+
+def _scene(tables: dict[str, Any], done: list[Any], seen: dict[str, Any], robots: list[Point],
+           room: dict[str, Any]) -> Scene:
+    width, depth = float(room["width"]), float(room["depth"])
+    finished = {str(t) for t in done}
+    tops, lanes = [], []
+    for tid, t in sorted(tables.items()):
+        sight = seen.get(tid)
+        at = table_where(t, tid in finished, [sight["x"], sight["y"]] if sight else None)
+        tops.append(footprint(t, 0.0, at))
+        if tid not in finished:
+            lanes.append(corridor(t, width, depth))
+    return Scene(width, depth, tuple(tops), tuple(lanes), tuple(robots))
+
+
+@primitive(outcomes=["walk", "here"], outputs=["path", "walk", "face"])
+def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose: dict[str, Any],
+               tables: dict[str, Any], room: dict[str, Any], done: list[Any] | None = None,
+               seen: dict[str, Any] | None = None, where: dict[str, Any] | None = None,
+               starts: dict[str, Any] | None = None, near: float = 0.8) -> Outcome:
+    """The way to this robot's place beside its table (`job`: table, at), planned round the tables,
+    their claimed corridors and the robots standing where they last said they were (`where`: {robot:
+    [x, y]}, room frame; else where they started, `starts`: {robot: {x, y}}); `here` when the robot
+    is within `near` m of that place. `path`: the waypoints in its own start frame; `walk`: where it
+    stands then the waypoints, in the room's frame (what it says to the other walkers); `face`: the
+    table, in its own start frame."""
+    me_local = [float(pose["x"]), float(pose["y"])]
+    x, y = to_room(start, me_local)
+    me = (x, y)
+    table = tables[str(job["table"])]
+    told = job.get("at") or [table["x"], table["y"]]
+    at = (float(told[0]), float(told[1]))
+    said = {str(r): (float(p["x"]), float(p["y"])) for r, p in (starts or {}).items()}
+    said.update({str(r): (float(p[0]), float(p[1])) for r, p in (where or {}).items()})
+    others = [p for r, p in sorted(said.items()) if r != ctx.agent]
+    goal = place_for(table, at, me, others)
+    if math.dist(me, goal) <= near:
+        return Outcome("here", path=[], walk=[], face=to_local(start, at))
+    # the table walked to is not in the way of its own place
+    rest = {k: v for k, v in tables.items() if k != str(job["table"])}
+    scene = _scene(rest, done or [], seen or {}, others, room)
+    scene = replace(scene, tables=(*scene.tables, footprint(table, 0.0, at)))
+    points = plan_walk(scene, me, goal) or [goal]
+    return Outcome("walk", path=[to_local(start, p) for p in points], face=to_local(start, at),
+                   walk=[[round(p[0], 4), round(p[1], 4)] for p in [me, *points]])
+
+
+@primitive(outcomes=["clear", "timeout"], outputs=["since"])
+def room_give_way(ctx: Context, *, walk: list[Any], every: float = 1.0, quiet: float = 2.5,
+                  limit: float = 45.0) -> Outcome:
+    """Say this walk (`room_walk`, every `every` s) and wait while another walker whose path comes
+    near it has the right of way (said its walk first, then the smaller id) and still says it (heard
+    within `quiet` s), for `limit` s at most. `since`: when this robot first said its walk (the
+    walkers it meets later give way to it)."""
+    since = round(ctx.time, 6)
+    mine = [(float(p[0]), float(p[1])) for p in walk]
+    heard: dict[str, tuple[float, list[Point], float]] = {}
+    next_say = ctx.time
+
+    def free() -> bool:
+        nonlocal next_say
+        if ctx.time >= next_say:
+            ctx.send(WALK, round=0, data={"walk": walk, "since": since})
+            next_say = ctx.time + every
+        while (m := ctx.receive(WALK)) is not None:
+            data = m.data.get("data", {})
+            if m.sender != ctx.agent and data.get("walk"):
+                path = [(float(p[0]), float(p[1])) for p in data["walk"]]
+                heard[m.sender] = (float(data.get("since", 0.0)), path, ctx.time)
+        if ctx.time - since < every + ctx.dt:  # hear the others' walks first
+            return False
+        return not any(ctx.time - t <= quiet and goes_first((s, r), (since, ctx.agent)) and conflict(mine, p)
+                       for r, (s, p, t) in heard.items())
+
+    if ctx.wait_until(free, timeout=limit):
+        return Outcome("clear", since=since)
+    return Outcome("timeout", since=since)
