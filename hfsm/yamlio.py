@@ -108,7 +108,8 @@ def parse_text(text: str, file: str) -> Document:
         mark = exc.problem_mark or exc.context_mark
         deep = _too_deep(text, builder.block_depth(), mark.index if mark else len(text))
         if deep is not None:
-            raise UserError([Finding(file, *deep, "E106", f"collections nested more than {MAX_DEPTH} deep")]) from None
+            message = f"collections nested more than {MAX_DEPTH} deep"
+            raise UserError([Finding(file, *deep, "E106", message)]) from None
         line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
         message = " ".join(str(p) for p in (exc.context, exc.problem) if p)
         extra = hint(message, text.splitlines(), line, col)

@@ -28,7 +28,9 @@ def register(registry: Registry) -> None:
 
 def history_problems(value: object) -> list[Problem]:
     """Every problem of the history file `value` names, before a run (`history_file.problems`)."""
-    from hfsm_behaviours.tararc.history_file import problems  # pure, no simulator; only when a history is given
+    from hfsm_behaviours.tararc.history_file import (
+        problems,  # pure, no simulator; only when a history is given
+    )
 
     return problems(value)
 

@@ -12,15 +12,15 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
-from hfsm_behaviours.drive.localise import SCAN_EVERY, Localised
-from hfsm_behaviours.inputs import SIM_INPUTS
-from hfsm_behaviours.senses import Senses
 from hfsm import located
 from hfsm.errors import UsageError
 from hfsm.primitive import Message
 from hfsm.runtime.program import span_ticks
 from hfsm.world import InputSpec
 from hfsm.yamlio import read_mapping
+from hfsm_behaviours.drive.localise import SCAN_EVERY, Localised
+from hfsm_behaviours.inputs import SIM_INPUTS
+from hfsm_behaviours.senses import Senses
 from hfsm_sim import Scenario, World, resolve
 from hfsm_sim.light import LightRobot
 from hfsm_sim.recorder import Recorder

@@ -8,12 +8,12 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
-from hfsm_behaviours.simworld import SimWorld, load_scenario
 from hfsm.load import load
 from hfsm.registry import Registry
 from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, run
 from hfsm.trace import JsonlTrace, TraceSink
+from hfsm_behaviours.simworld import SimWorld, load_scenario
 from hfsm_sim import World
 
 

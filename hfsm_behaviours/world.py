@@ -11,10 +11,10 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from hfsm_behaviours.inputs import SIM_INPUTS
 from hfsm.cli.guard import is_regular_or_new, make_folder, number
 from hfsm.errors import UsageError
 from hfsm.world import InputSpec
+from hfsm_behaviours.inputs import SIM_INPUTS
 
 if TYPE_CHECKING:
     from hfsm_behaviours.simworld import SimWorld

@@ -1,7 +1,7 @@
 """The robots' camera images: the world's boxes and cylinders drawn into a numpy depth buffer.
 
-Every visible body of the world is a set of boxes (hfsm_sim.room, hfsm_sim.body) or a cylinder (hfsm_sim.light)
-of one colour each. This draws them as pybullet's tiny renderer does (its flat light: ambient
+Every visible body of the world is a set of boxes (hfsm_sim.room, hfsm_sim.body) or a cylinder
+(hfsm_sim.light) of one colour each. This draws them as pybullet's tiny renderer does (its flat light: ambient
 plus diffuse, no specular, no shadows; its colours to the unit; its sampling of pixel (i, j) at
 image point (i, j + 1); a white sky) at a fraction of its cost, which grows with every pixel a
 surface covers (~250 ns a pixel, 50-100 ms an image at 640x480). The two differ on the odd pixel

@@ -9,13 +9,13 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from hfsm_behaviours.simworld import SimWorld
 from hfsm.load import load
 from hfsm.primitive import Context, primitive
 from hfsm.registry import Registry
 from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, RunResult, run
 from hfsm.trace import ListTrace
+from hfsm_behaviours.simworld import SimWorld
 from hfsm_sim import World, load_scenario
 from hfsm_sim.profile import DEFAULT_BODY
 

@@ -10,13 +10,13 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from hfsm_behaviours.room import frames
-from hfsm_behaviours.simworld import SimWorld
 from hfsm.load import load
 from hfsm.registry import Registry
 from hfsm.runtime.program import Program, machine_params
 from hfsm.runtime.run import RunOptions, run
 from hfsm.trace import TraceSink
+from hfsm_behaviours.room import frames
+from hfsm_behaviours.simworld import SimWorld
 from hfsm_sim import World, load_scenario
 from hfsm_sim.scenario import FailureAt, Scenario
 

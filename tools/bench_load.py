@@ -70,9 +70,10 @@ def measure(sizes: list[int], repeats: int, old: Path | None) -> list[Row]:
 
 def checkout(rev: str, into: Path) -> Path:
     """hfsm, hfsm_behaviours and hfsm_sim as they were at `rev`, unpacked into `into`."""
-    archive = subprocess.run(
-        ["git", "-C", str(ROOT), "archive", rev, "hfsm", "hfsm_behaviours", "hfsm_sim"], capture_output=True, check=True
-    )
+    old = subprocess.run(["git", "-C", str(ROOT), "cat-file", "-e", f"{rev}:hfsm_sim"], capture_output=True)
+    names = ["hfsm", "hfsm_behaviours", "hfsm_sim"] if old.returncode == 0 else ["hfsm", "behaviours", "sim"]
+    command = ["git", "-C", str(ROOT), "archive", rev, *names]
+    archive = subprocess.run(command, capture_output=True, check=True)
     subprocess.run(["tar", "-x", "-C", str(into)], input=archive.stdout, check=True)
     return into
 

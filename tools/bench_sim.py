@@ -24,8 +24,8 @@ for folder in (ROOT, ROOT / "tools"):
 
 from docsection import write_section  # noqa: E402
 
-from hfsm_behaviours.trial import TrialSpec, run_trial  # noqa: E402
 from hfsm.cli.quiet import stdout_to_stderr  # noqa: E402
+from hfsm_behaviours.trial import TrialSpec, run_trial  # noqa: E402
 from hfsm_sim.scenario import load_scenario  # noqa: E402
 from hfsm_sim.world import World  # noqa: E402
 

@@ -23,11 +23,11 @@ import yaml
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from hfsm_behaviours.simworld import SimWorld, load_scenario  # noqa: E402
 from hfsm.load import load  # noqa: E402
 from hfsm.registry import Registry  # noqa: E402
 from hfsm.runtime.program import Program, machine_params  # noqa: E402
 from hfsm.runtime.run import RunOptions, run  # noqa: E402
+from hfsm_behaviours.simworld import SimWorld, load_scenario  # noqa: E402
 from hfsm_sim import World  # noqa: E402
 from tools.tararc.measure import Timeline, measure  # noqa: E402
 from tools.tararc.scenes import scene  # noqa: E402

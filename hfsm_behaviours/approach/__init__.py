@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
+from hfsm.primitive import Primitive
 from hfsm_behaviours.approach.around import go_to_opposite_side_of_table
 from hfsm_behaviours.approach.assist import clear_way, look_for_leader, sense_own_colour
 from hfsm_behaviours.approach.corner import go_to_table
 from hfsm_behaviours.approach.search import centre_table, scan_for_table, spin_on_the_spot, walk_randomly
 from hfsm_behaviours.approach.side import go_to_the_lifting_point, position_to_centre_of_table_side
-from hfsm.primitive import Primitive
 
 PRIMITIVES: tuple[Primitive, ...] = (
     scan_for_table,

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 
+from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.approach.frames import Point, Side, from_table_frame, nearest_side, sides, table_frame
 from hfsm_behaviours.approach.navigate import (
     Look,
@@ -26,7 +27,6 @@ from hfsm_behaviours.approach.sight import (
     see_table,
 )
 from hfsm_behaviours.body import Body
-from hfsm.primitive import Context, Outcome, primitive
 from hfsm_sim.perception.table_rect import TableRect
 
 TABLE_YAWS = (0.0, 0.9, -0.9, 1.8, -1.8)

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import math
 
+from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.approach.frames import bearing_to, body_to_odom
 from hfsm_behaviours.approach.sight import leader_behind_table, named, own_colour, scan_for_robot, see_table
 from hfsm_behaviours.body import Body
-from hfsm.primitive import Context, Outcome, primitive
 
 LEADER_YAWS = [0.0, 0.9, -0.9, 1.8, -1.8]
 

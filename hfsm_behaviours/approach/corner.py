@@ -12,10 +12,10 @@ import math
 
 import numpy as np
 
+from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.approach.frames import Point, bearing_to, body_to_odom, distance, odom_to_body
 from hfsm_behaviours.approach.sight import named, see_named_table
 from hfsm_behaviours.body import Body
-from hfsm.primitive import Context, Outcome, primitive
 from hfsm_sim.perception import Blob, find_table, pixel_bearing
 from hfsm_sim.perception.table_rect import table_rect
 

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import math
 
+from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.approach.frames import bearing_to
 from hfsm_behaviours.approach.sight import ground_distance, named, see_named_table, see_table
 from hfsm_behaviours.body import Body
-from hfsm.primitive import Context, Outcome, primitive
 
 
 @primitive(outcomes=["seen", "not_seen"], outputs=["bearing", "distance"], world="sim")

@@ -6,11 +6,11 @@ import math
 
 import numpy as np
 
+from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.approach.frames import Side, from_table_frame, sides, table_frame
 from hfsm_behaviours.approach.navigate import Look, Tolerance, align_to_side, look_at_table, walk_to
 from hfsm_behaviours.approach.sight import named
 from hfsm_behaviours.body import Body
-from hfsm.primitive import Context, Outcome, primitive
 from hfsm_sim.perception.table_rect import TableRect, outline_pieces
 
 

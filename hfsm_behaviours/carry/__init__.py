@@ -7,12 +7,12 @@ loop of Behaviour 2 over `look_left_and_right`, `align_body_parallel` and `walk_
 
 from __future__ import annotations
 
+from hfsm.primitive import Primitive
 from hfsm_behaviours.carry.centre import align_body_parallel, look_left_and_right, walk_sideways
 from hfsm_behaviours.carry.lifting import land_table, lift_table
 from hfsm_behaviours.carry.square import recentre_to_middle_of_table
 from hfsm_behaviours.carry.stepping import small_step_sideways
 from hfsm_behaviours.carry.wall import choose_carry_direction, table_at_wall
-from hfsm.primitive import Primitive
 
 PRIMITIVES: tuple[Primitive, ...] = (
     recentre_to_middle_of_table,

@@ -5,9 +5,9 @@ from __future__ import annotations
 
 import math
 
+from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.body import Body
 from hfsm_behaviours.carry.sensing import edge, extent
-from hfsm.primitive import Context, Outcome, primitive
 
 
 @primitive(outcomes=["measured", "lost"], failures=["lost"], outputs=["left", "right"], world="sim")

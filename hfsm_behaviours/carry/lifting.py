@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from hfsm_behaviours.body import Body
 from hfsm.primitive import Context, primitive
+from hfsm_behaviours.body import Body
 
 
 @primitive(outcomes=["lifted", "failure"], world="sim")

@@ -1,7 +1,7 @@
 """What the carrying robot senses, in one call each: turn the head, take one image, measure.
 
-Thin wrappers over `hfsm_sim.perception` (edge, reach, walls) for the primitives of this package; every angle is a
-head pose the primitive passes in (its params), never a constant buried here.
+Thin wrappers over `hfsm_sim.perception` (edge, reach, walls) for the primitives of this package;
+every angle is a head pose the primitive passes in (its params), never a constant buried here.
 """
 
 from __future__ import annotations

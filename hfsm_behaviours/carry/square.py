@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import math
 
+from hfsm.primitive import Context, primitive
 from hfsm_behaviours.body import Body
 from hfsm_behaviours.carry.sensing import edge
-from hfsm.primitive import Context, primitive
 
 
 @primitive(outcomes=["centred", "lost"], failures=["lost"], world="sim")

@@ -6,9 +6,9 @@ and whether the hands still hold (`in.holding`) while this primitive walks, and 
 
 from __future__ import annotations
 
+from hfsm.primitive import Context, primitive
 from hfsm_behaviours.body import Body
 from hfsm_behaviours.carry.sensing import side_sign
-from hfsm.primitive import Context, primitive
 
 
 @primitive(outcomes=["stepped"], world="sim")

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import math
 
+from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.body import Body
 from hfsm_behaviours.carry.sensing import edge, extent, side_sign, wall
-from hfsm.primitive import Context, Outcome, primitive
 from hfsm_sim.perception import WallSeen
 
 MIN_CLOSING = 0.3  # a wall more than ~72 degrees off square to the carry cannot be judged by eye

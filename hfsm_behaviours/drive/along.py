@@ -6,9 +6,9 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.approach.frames import wrap
 from hfsm_behaviours.drive.goto import body_velocity, heading
-from hfsm.primitive import Context, Outcome, primitive
 
 FACED = 0.1  # radians: facing the point
 

@@ -10,9 +10,9 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.approach.frames import odom_to_body, wrap
 from hfsm_behaviours.drive.avoid import Detour, dodge, sensed
-from hfsm.primitive import Context, Outcome, primitive
 
 Point = tuple[float, float]
 BRAKE, CREEP = 2.0, 0.05

@@ -6,13 +6,13 @@ run in every world, `none` included. Moving to a place is the world's (`go_to`).
 
 from __future__ import annotations
 
+from hfsm.primitive import Primitive
 from hfsm_behaviours.teamwork.exchange import tararc_exchange
 from hfsm_behaviours.teamwork.memory import tararc_recall, tararc_remember
 from hfsm_behaviours.teamwork.plans import tararc_allocate, tararc_help
 from hfsm_behaviours.teamwork.radio import partner_silent, tararc_watch
 from hfsm_behaviours.teamwork.room import room_allocate, room_assign, room_locate, room_relocalise, room_watch
 from hfsm_behaviours.teamwork.walk import room_give_way, room_route
-from hfsm.primitive import Primitive
 
 PRIMITIVES: tuple[Primitive, ...] = (
     tararc_recall,

@@ -5,12 +5,12 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.tararc.history import History
 from hfsm_behaviours.tararc.history_file import load, save
 from hfsm_behaviours.tararc.outcome import group_outcomes, merge_into, record_team
 from hfsm_behaviours.tararc.plan import history_of, record_of
 from hfsm_behaviours.teamwork.plans import coefficients_from
-from hfsm.primitive import Context, Outcome, primitive
 
 
 def _read(history: str) -> History:

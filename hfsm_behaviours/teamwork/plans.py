@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from typing import Any
 
+from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.tararc.formulas import Coefficients
 from hfsm_behaviours.tararc.plan import after_losses, make_plan, role_of
-from hfsm.primitive import Context, Outcome, primitive
 
 
 def coefficients_from(values: dict[str, Any]) -> Coefficients:

@@ -9,11 +9,11 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from hfsm.primitive import Context, Outcome, primitive
+from hfsm.runtime.program import span_ticks
 from hfsm_behaviours.room.frames import ahead, at_wall, relocalise, to_local, to_room
 from hfsm_behaviours.room.plan import job_of, make_room_plan
 from hfsm_behaviours.teamwork.plans import coefficients_from
-from hfsm.primitive import Context, Outcome, primitive
-from hfsm.runtime.program import span_ticks
 
 
 @primitive(outcomes=["allocated"], outputs=["plan"])

@@ -8,6 +8,7 @@ import math
 from dataclasses import replace
 from typing import Any
 
+from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.room.claims import footprint
 from hfsm_behaviours.room.frames import to_local, to_room
 from hfsm_behaviours.room.walks import (
@@ -20,7 +21,6 @@ from hfsm_behaviours.room.walks import (
     plan_walk,
     table_where,
 )
-from hfsm.primitive import Context, Outcome, primitive
 
 WALK = "room_walk"
 

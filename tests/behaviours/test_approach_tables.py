@@ -10,9 +10,9 @@ from typing import cast
 import pytest
 from tables_scene import TABLES, in_start_frame, matches, three_tables
 
+from hfsm.primitive import Context
 from hfsm_behaviours.approach.navigate import Look, look_at_table
 from hfsm_behaviours.body import Body
-from hfsm.primitive import Context
 from hfsm_sim.perception import TableSeen
 from hfsm_sim.world import World
 

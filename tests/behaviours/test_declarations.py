@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from hfsm_behaviours.registry import DECLARATIONS, primitives
 from hfsm import declarations
 from hfsm.registry import Registry
+from hfsm_behaviours.registry import DECLARATIONS, primitives
 
 ROOT = Path(__file__).resolve().parents[2]
 

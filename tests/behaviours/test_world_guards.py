@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 from pydantic import ValidationError
 
-from hfsm_behaviours.world import default_stem
 from hfsm.cli.run import main
+from hfsm_behaviours.world import default_stem
 from hfsm_sim.recorder import Recorder
 from hfsm_sim.scenario import scenario_from_dict
 

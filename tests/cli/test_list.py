@@ -8,9 +8,9 @@ from pathlib import Path
 
 import pytest
 
-from hfsm_behaviours.registry import primitives
 from hfsm.builtins import BUILTINS
 from hfsm.cli.run import main
+from hfsm_behaviours.registry import primitives
 
 ROOT = Path(__file__).resolve().parents[2]
 

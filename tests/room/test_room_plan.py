@@ -12,7 +12,14 @@ from hypothesis import strategies as st
 
 from hfsm_behaviours.room.claims import Rect, claim_walls, overlap
 from hfsm_behaviours.room.frames import at_wall, difficulty_of, relocalise, to_local, to_room
-from hfsm_behaviours.room.plan import groups_after, job_of, make_room_plan, slide_of, sliding_partners, tables_of
+from hfsm_behaviours.room.plan import (
+    groups_after,
+    job_of,
+    make_room_plan,
+    slide_of,
+    sliding_partners,
+    tables_of,
+)
 
 ROOM = {"width": 7.0, "depth": 5.0}
 TASKS = [

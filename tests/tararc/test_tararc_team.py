@@ -10,10 +10,10 @@ from typing import Any
 import pytest
 from tararc_runs import case, decisions, run_plan
 
-from hfsm_behaviours.tararc.history import History, Record
-from hfsm_behaviours.tararc.history_file import dumps, load, save
 from hfsm.runtime.run import RunResult
 from hfsm.testing.model import FailAt
+from hfsm_behaviours.tararc.history import History, Record
+from hfsm_behaviours.tararc.history_file import dumps, load, save
 
 KEYS = ("role", "agent", "task", "lost", "outcomes")
 TEAM_CASES = [
