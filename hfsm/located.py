@@ -12,6 +12,7 @@ from pydantic_core import ErrorDetails
 from hfsm.errors import Finding, UserError
 from hfsm.expr import reads
 from hfsm.names import NAME_PATTERN, did_you_mean
+from hfsm.spec import shown
 from hfsm.yamlio import Document, Path_
 
 M = TypeVar("M", bound=BaseModel)
@@ -191,7 +192,7 @@ def _describe(value: Any) -> str:
         return "a mapping"
     if isinstance(value, list):
         return "a list"
-    return repr(value)
+    return shown(value)
 
 
 def _allowed_keys(model: type[BaseModel], loc: tuple[int | str, ...]) -> list[str]:

@@ -8,7 +8,7 @@ from hfsm.expr import ExprSyntaxError
 from hfsm.library import MachineFile
 from hfsm.model import CallState, Region
 from hfsm.names import RESERVED_MESSAGES, did_you_mean, is_name
-from hfsm.spec import BehaviourSpec, type_ok
+from hfsm.spec import BehaviourSpec, shown, type_ok
 from hfsm.values import split
 
 Where = tuple[str | int, ...]
@@ -65,7 +65,7 @@ def _check_params(
             )
         elif not _is_expr(value) and not type_ok(value, param.type):
             message = (
-                f"param '{key}' of '{spec.name}' takes {param.type}, not {type(value).__name__} {value!r}"
+                f"param '{key}' of '{spec.name}' takes {param.type}, not {type(value).__name__} {shown(value)}"
             )
             if isinstance(value, str) and reads_like_expression(value):
                 message += f"; write '{wrapped(value)}' for an expression"

@@ -11,7 +11,7 @@ from hfsm.runtime.cancel import Cancelling
 from hfsm.runtime.primitives import PrimitiveActivity, RunContext
 from hfsm.runtime.program import RMachine, resolve_params, timer_ticks
 from hfsm.runtime.states import Callee
-from hfsm.spec import is_finite_number
+from hfsm.spec import is_finite_number, shown
 
 
 class Calls(Cancelling):
@@ -28,7 +28,7 @@ class Calls(Cancelling):
         except ExprValueError as exc:
             return Event("error", error=f"{what}: {exc}")
         if not is_finite_number(seconds) or seconds < 0 or (seconds == 0 and not zero):
-            return Event("error", error=f"{what} must be {takes}, not {seconds!r}")
+            return Event("error", error=f"{what} must be {takes}, not {shown(seconds)}")
         return float(seconds)
 
     def _params(self, callee: Callee, frame: Frame) -> dict[str, Any] | Event:

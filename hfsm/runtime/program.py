@@ -15,7 +15,7 @@ from hfsm.model import Watch as WatchModel
 from hfsm.registry import Registry
 from hfsm.runtime.states import Callee, RMachine, RRegion, RState, Watch
 from hfsm.runtime.states import JoinRule as RJoin
-from hfsm.spec import BehaviourSpec, coerce, is_finite_number, type_ok
+from hfsm.spec import BehaviourSpec, coerce, is_finite_number, shown, type_ok
 from hfsm.values import compile_value
 
 __all__ = ["Program", "RMachine", "RState", "machine_params", "resolve_params", "span_ticks", "timer_ticks"]
@@ -42,7 +42,7 @@ def resolve_params(spec: BehaviourSpec, given: Mapping[str, Any]) -> dict[str, A
         if name in given:
             value = given[name]
             if not type_ok(value, param.type):
-                return f"param '{name}' of '{spec.name}' takes {param.type}, not {value!r}"
+                return f"param '{name}' of '{spec.name}' takes {param.type}, not {shown(value)}"
             params[name] = coerce(value, param.type)
         elif not param.required:
             params[name] = param.default
