@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import shlex
 import subprocess
 import sys
 import tempfile
@@ -182,7 +183,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--robots", type=int, default=12)
     parser.add_argument("--from", dest="source", type=Path, help="rewrite the docs from this results file")
     parser.add_argument("--no-doc", action="store_true")
-    parser.add_argument("extra", nargs="*", help="more hfsm-run arguments (after --)")
+    parser.add_argument("--args", dest="extra", type=shlex.split, default=[],
+                        help="more hfsm-run arguments, as one string ('--fail r5@10 --radio-loss 0.3')")
     args = parser.parse_args(argv)
     name = f"longrun_{args.run}"
     raw = RESULTS / f"{name}.json"
@@ -195,7 +197,8 @@ def main(argv: list[str] | None = None) -> int:
                        else tararc_command(out, args.seed, args.extra))
             trace = Path(command[command.index("--trace") + 1])
             data = asdict(measure(args.run, command, trace))
-        data["how"] = " ".join(["nice -n 15 .venv/bin/python tools/longrun.py", *(argv or sys.argv[1:])])
+        data["how"] = shlex.join(["nice", "-n", "15", ".venv/bin/python", "tools/longrun.py",
+                                  *(argv if argv is not None else sys.argv[1:])])
         RESULTS.mkdir(parents=True, exist_ok=True)
         raw.write_text(json.dumps(data, indent=1) + "\n")
     lines = report(data, data["how"])

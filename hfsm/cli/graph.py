@@ -7,7 +7,6 @@ each through a temporary file renamed into place, so bad input leaves the output
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import sys
 from collections.abc import Sequence
@@ -118,7 +117,7 @@ def machine_files(paths: Sequence[Path]) -> list[Path]:
         if path.is_dir():
             found = sorted(p for p in path.iterdir() if p.suffix in SUFFIXES and p.is_file())
             if not found:
-                print(f"hfsm-graph: no machine files in {path}", file=sys.stderr)
+                raise UsageError(f"{path}: no machine files (*.yaml) in this folder")
             files += found
         elif path.is_file():
             files.append(path)
@@ -155,11 +154,13 @@ def _read_trace(path: Path) -> list[dict[str, object]]:
         records = read_jsonl(path)
     except OSError as exc:
         raise UsageError(f"--trace {path}: {exc.strerror or exc}") from exc
-    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+    except ValueError as exc:  # JSONDecodeError and UnicodeDecodeError among them
         raise UsageError(f"--trace {path}: not a JSON-lines trace ({exc})") from exc
     for line, record in enumerate(records, start=1):
         if not _is_record(record):
             raise UsageError(f"--trace {path}:{line}: not a trace record of hfsm-run --trace")
+    if not records:
+        raise UsageError(f"--trace {path}: the trace has no records")
     return records
 
 
