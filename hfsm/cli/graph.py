@@ -117,7 +117,7 @@ def machine_files(paths: Sequence[Path]) -> list[Path]:
         if path.is_dir():
             found = sorted(p for p in path.iterdir() if p.suffix in SUFFIXES and p.is_file())
             if not found:
-                raise UsageError(f"{path}: no machine files (*.yaml) in this folder")
+                print(f"hfsm-graph: no machine files in {path}", file=sys.stderr)
             files += found
         elif path.is_file():
             files.append(path)

@@ -81,6 +81,9 @@ def test_special_files(name: str, tmp_path: Path) -> None:
     path = corpus.SPECIAL[name](tmp_path)
     for main, argv in [*machine_commands(path, tmp_path / "out"), (test.main, [str(path)])]:
         code, text = call(main, argv)
+        if main is graph.main and name == "folder":  # a folder is a drawing's input: the legend alone
+            assert code == 0 and f"no machine files in {path}" in text
+            continue
         assert_clear(code, text, path)
 
 
