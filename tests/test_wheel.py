@@ -2,8 +2,8 @@
 and the template's machine run by name from a folder that is no checkout (issue 12.3).
 
 The fresh venv takes the other dependencies (pybullet, pydantic, ...) from this one through a
-`.pth` line, so nothing is downloaded; its own site-packages come first, so `hfsm`, `behaviours`
-and `sim` are the wheel's, not this checkout's.
+`.pth` line, so nothing is downloaded; its own site-packages come first, so `hfsm`, `hfsm_behaviours`
+and `hfsm_sim` are the wheel's, not this checkout's.
 """
 
 from __future__ import annotations
@@ -13,6 +13,7 @@ import shutil
 import subprocess
 import sys
 import sysconfig
+import zipfile
 from pathlib import Path
 
 import pytest
@@ -35,6 +36,12 @@ def test_wheels_run_the_task_and_the_template_from_any_folder(tmp_path: Path) ->
     built = sh(sys.executable, "-m", "pip", "wheel", "-q", "--no-deps", "--no-build-isolation", "-w", dist,
                source, source / "examples" / "plugin_template", cwd=tmp_path)
     assert built.returncode == 0, built.stderr
+    (ours,) = dist.glob("hfsm-*.whl")
+    with zipfile.ZipFile(ours) as wheel:
+        top = {name.split("/")[0] for name in wheel.namelist() if ".dist-info/" not in name}
+        assert top == {"hfsm", "hfsm_sim", "hfsm_behaviours"}
+        top_level = [n for n in wheel.namelist() if n.endswith(".dist-info/top_level.txt")]
+        assert all(set(wheel.read(n).decode().split()) <= top for n in top_level)
     venv = tmp_path / "venv"
     assert sh(sys.executable, "-m", "venv", "--without-pip", venv, cwd=tmp_path).returncode == 0
     site = next((venv / "lib").glob("python3*/site-packages"))

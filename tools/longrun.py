@@ -129,25 +129,25 @@ def _hfsm_run() -> str:
     return str(Path(sys.executable).parent / "hfsm-run")
 
 
-def room_command(out: Path, seed: int, tables: int, robots: int, extra: list[str]) -> list[str]:
+def room_command(out: Path, seed: int, tables: int, robots: int, extra: list[str], every: float) -> list[str]:
     scenario = room(seed, tables, robots)
     scenario["description"] = f"long run: {tables} tables, {robots} humanoids, seed {seed}"
     path = out / "longrun_room.yaml"
     path.write_text(yaml.safe_dump(scenario, sort_keys=False))
     return [_hfsm_run(), "machines/clear_room.yaml", "--scenario", str(path), "--seed", str(seed),
-            "--no-video", "--quiet", "--progress", "60", "--max-time", "2160",
+            "--no-video", "--quiet", "--progress", str(every), "--max-time", "2160",
             "--trace", str(out / "longrun_room.jsonl"), *extra]
 
 
-def tararc_command(out: Path, seed: int, extra: list[str]) -> list[str]:
+def tararc_command(out: Path, seed: int, extra: list[str], every: float) -> list[str]:
     return [_hfsm_run(), "machines/tararc.yaml", "--scenario", "alloc_50", "--seed", str(seed),
-            "--no-video", "--quiet", "--progress", "60", "--max-time", "3660",
+            "--no-video", "--quiet", "--progress", str(every), "--max-time", "3660",
             "--trace", str(out / "longrun_tararc.jsonl"), *extra]
 
 
 def growth(samples: list[Sample]) -> float:
-    """Resident memory at the last sample minus at the first after the first simulated minute (MB)."""
-    settled = [s for s in samples if s.simulated >= 120] or samples
+    """Resident memory at the last sample minus at the second (MB)."""
+    settled = samples[1:] or samples
     return round(settled[-1].rss_mb - settled[0].rss_mb, 1) if settled else 0.0
 
 
@@ -159,20 +159,25 @@ def report(run: dict[str, Any], how: str) -> list[str]:
         return [*lines, "No progress line was printed."]
     last = samples[-1]
     lines += [
-        f"- simulated {last.simulated / 60:.0f} min in {run['wall'] / 60:.1f} min of wall time; exit {run['exit_code']}",
-        f"- resident memory: {rss[0]:.0f} MB at minute 1, {min(rss):.0f}-{max(rss):.0f} MB over the run, "
-        f"{rss[-1]:.0f} MB at the end (peak {run['peak_mb']:.0f} MB); from minute 2 to the end "
-        f"{growth(samples):+.1f} MB",
+        f"- simulated {_when(last.simulated)} in {run['wall'] / 60:.1f} min of wall time; exit {run['exit_code']}",
+        f"- resident memory: {rss[0]:.0f} MB at {_when(samples[0].simulated)}, {min(rss):.0f}-{max(rss):.0f} MB "
+        f"over the run, {rss[-1]:.0f} MB at the last sample (peak {run['peak_mb']:.0f} MB); from the second "
+        f"sample to the last {growth(samples):+.1f} MB",
         f"- trace: {run['trace_lines']} lines, {run['trace_bytes'] / 1e6:.1f} MB, "
         + ("every line one JSON object, the last complete" if run["trace_whole"]
            else f"NOT whole: {run['trace_problem']}"),
     ]
     if run["summary"]:
         lines += ["", "```text", run["summary"], "```"]
-    lines += ["", "| simulated min | " + " | ".join(f"{s.simulated / 60:.0f}" for s in samples[::5]) + " |",
-              "|---|" + "---|" * len(samples[::5]),
-              "| resident MB | " + " | ".join(f"{s.rss_mb:.0f}" for s in samples[::5]) + " |"]
+    shown = samples[:: max(1, len(samples) // 12)]
+    lines += ["", "| simulated | " + " | ".join(_when(s.simulated) for s in shown) + " |",
+              "|---|" + "---|" * len(shown),
+              "| resident MB | " + " | ".join(f"{s.rss_mb:.0f}" for s in shown) + " |"]
     return lines
+
+
+def _when(seconds: float) -> str:
+    return f"{seconds / 60:.0f} min" if seconds >= 60 else f"{seconds:.0f} s"
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -181,6 +186,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--tables", type=int, default=6)
     parser.add_argument("--robots", type=int, default=12)
+    parser.add_argument("--every", type=float, default=60, help="simulated seconds between samples")
     parser.add_argument("--from", dest="source", type=Path, help="rewrite the docs from this results file")
     parser.add_argument("--no-doc", action="store_true")
     parser.add_argument("--args", dest="extra", type=shlex.split, default=[],
@@ -193,8 +199,8 @@ def main(argv: list[str] | None = None) -> int:
     else:
         with tempfile.TemporaryDirectory() as tmp:
             out = Path(tmp)
-            command = (room_command(out, args.seed, args.tables, args.robots, args.extra) if args.run == "room"
-                       else tararc_command(out, args.seed, args.extra))
+            command = (room_command(out, args.seed, args.tables, args.robots, args.extra, args.every)
+                       if args.run == "room" else tararc_command(out, args.seed, args.extra, args.every))
             trace = Path(command[command.index("--trace") + 1])
             data = asdict(measure(args.run, command, trace))
         data["how"] = shlex.join(["nice", "-n", "15", ".venv/bin/python", "tools/longrun.py",
