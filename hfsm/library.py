@@ -1,4 +1,4 @@
-"""Finding and loading machine files by name along the search path (SPEC section 10)."""
+"""Finding and loading machine files by name along the search path (docs/REFERENCE.md#hfsm-run)."""
 
 from __future__ import annotations
 

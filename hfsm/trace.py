@@ -1,4 +1,4 @@
-"""Traces as values: JSON records written as the run goes (SPEC section 10)."""
+"""Traces as values: JSON records written as the run goes (docs/REFERENCE.md#the-trace)."""
 
 from __future__ import annotations
 

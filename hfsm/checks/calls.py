@@ -1,4 +1,5 @@
-"""Checks of each call state against the signature of what it calls (SPEC sections 3, 4, 8)."""
+"""Checks of each call state against the signature of what it calls (docs/REFERENCE.md#states,
+docs/REFERENCE.md#events-and-arcs, docs/REFERENCE.md#built-in-behaviours)."""
 
 from __future__ import annotations
 

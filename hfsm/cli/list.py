@@ -22,7 +22,7 @@ HEADER = """# Behaviours
 
 Every behaviour a machine can call with `do:`, as `hfsm-run --list` prints it (regenerate with
 `.venv/bin/hfsm-run --list > docs/BEHAVIOURS.md`; a test fails when this file is stale).
-Failures are the outcomes that count as failing (SPEC 6); outputs are what `save:` may take.
+Failures are the outcomes that count as failing (docs/REFERENCE.md#messages-between-agents); outputs are what `save:` may take.
 """
 
 

@@ -1,4 +1,4 @@
-"""`hfsm-run`: check a machine file and run it (SPEC section 10)."""
+"""`hfsm-run`: check a machine file and run it (docs/REFERENCE.md#hfsm-run)."""
 
 from __future__ import annotations
 

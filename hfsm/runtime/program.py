@@ -24,7 +24,7 @@ Resolve = Callable[[str], "RState | str"]
 
 
 def span_ticks(seconds: float, dt: float) -> int:
-    """Ticks from the tick a span begins to the tick it ends in (SPEC section 5)."""
+    """Ticks from the tick a span begins to the tick it ends in (docs/REFERENCE.md#time-and-timers)."""
     return math.ceil(seconds / dt - 1e-9)
 
 
