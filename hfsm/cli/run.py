@@ -7,6 +7,7 @@ import logging
 import sys
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from hfsm import plugins
 from hfsm.cli import guard, report
@@ -19,6 +20,9 @@ from hfsm.monitor import live
 from hfsm.names import is_name
 from hfsm.registry import Registry
 from hfsm.world import WORLDS_GROUP, NullWorld, World, WorldFactory
+
+if TYPE_CHECKING:
+    from hfsm.runtime.run import RunResult
 
 
 def _factories() -> dict[str, WorldFactory]:
@@ -58,6 +62,8 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     p.add_argument("--list", action="store_true", help="print every behaviour a run can call (Markdown)")
     p.add_argument("--traceback", action="store_true", help="show Python tracebacks of run-time errors")
     p.add_argument("--quiet", action="store_true", help="no summary table on stderr")
+    p.add_argument("--fail-exit", action="store_true",
+                   help="exit 3 when the top machine ends in one of its failures (timeout included)")
     p.add_argument(
         "--fail",
         action="append",
@@ -251,7 +257,18 @@ def _run(
             print(result.traceback, file=sys.stderr, end="")
     if trace and not trace.failed:
         print(f"wrote {trace_path}", file=sys.stderr)
-    return stop.exit_code if stop.signum else result.exit_code
+    if stop.signum:
+        return stop.exit_code
+    failed = _failure_ends(result, loaded) if args.fail_exit and not result.error else []
+    for agent, outcome in failed:
+        print(f"hfsm-run: {agent} ended in the failure outcome '{outcome}' (--fail-exit: exit 3)", file=sys.stderr)
+    return 3 if failed else result.exit_code
+
+
+def _failure_ends(result: RunResult, loaded: Loaded) -> list[tuple[str, str]]:
+    """The agents whose top machine ended in one of its failure outcomes, with the outcome."""
+    failures = loaded.roots[0].model.failure_outcomes
+    return [(name, end.outcome) for name, end in result.agents.items() if end.outcome in failures]
 
 
 def entry() -> None:
