@@ -13,6 +13,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from hfsm.cli import report
+from hfsm.cli.named import machine_path
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.diagram.dot import to_dot
 from hfsm.diagram.extract import Sources, machine_figure, overview
@@ -47,7 +48,8 @@ def build_parser() -> argparse.ArgumentParser:
         prog="hfsm-graph",
         description="Draw machine files: a figure per machine, the call graph, the legend.",
     )
-    p.add_argument("paths", nargs="+", type=Path, metavar="PATH", help="a machine file or a folder of them")
+    p.add_argument("paths", nargs="+", type=Path, metavar="PATH",
+                   help="a machine file, a folder of them, or a machine's name (an installed plug-in's or in --lib)")
     p.add_argument("-o", "--output", type=Path, default=Path("."), metavar="DIR", help="default: .")
     p.add_argument(
         "--format",
@@ -100,7 +102,10 @@ def _main(args: argparse.Namespace) -> int:
 
 def draw(args: argparse.Namespace) -> dict[str, bytes]:
     """Every output file's name and bytes, all drawn in memory; raises on bad input."""
-    figures = _figures(args, machine_files(args.paths))
+    with stdout_to_stderr():
+        registry = Registry.discover()
+    named = [machine_path(p, args.lib, registry) for p in args.paths]
+    figures = _figures(args, machine_files(named), registry)
     link_ext = next((f for f in args.format if f != "dot"), "svg")
     outputs: dict[str, bytes] = {}
     for figure in figures:
@@ -126,12 +131,10 @@ def machine_files(paths: Sequence[Path]) -> list[Path]:
     return list(dict.fromkeys(files))
 
 
-def _figures(args: argparse.Namespace, files: list[Path]) -> list[Figure]:
+def _figures(args: argparse.Namespace, files: list[Path], registry: Registry) -> list[Figure]:
     figures: list[Figure] = []
     names: list[str] = []
     if files:
-        with stdout_to_stderr():
-            registry = Registry.discover()
         loaded = load(files, libs=args.lib, registry=registry)
         src = Sources.from_loaded(loaded, registry)
         names = [mf.name for mf in loaded.roots]

@@ -13,11 +13,11 @@ from hfsm import plugins
 from hfsm.cli import guard, report
 from hfsm.cli.fail import check_failures, fail_arg
 from hfsm.cli.history import top_params
+from hfsm.cli.named import machine_path
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import UsageError, UserError
 from hfsm.load import Loaded, load, worlds_needed
 from hfsm.monitor import live
-from hfsm.names import is_name
 from hfsm.registry import Registry
 from hfsm.world import WORLDS_GROUP, NullWorld, World, WorldFactory
 
@@ -117,7 +117,7 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         registry = Registry.discover()
     if args.world is not None:
         registry = registry.for_world(args.world)
-    args.file = _named(args.file, args.lib, registry)
+    args.file = machine_path(args.file, args.lib, registry)
     inputs = {"none": NullWorld().inputs(), **{n: f.inputs() for n, f in factories.items()}}
     loaded = load(
         [args.file],
@@ -155,15 +155,6 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         files = guard.close_world(world)
         for path in files if started else ():
             print(f"wrote {path}", file=sys.stderr)
-
-
-def _named(file: Path, libs: list[Path], registry: Registry) -> Path:
-    """FILE, or a machine's name (`hfsm-run move_furniture`) found in --lib folders and plug-ins."""
-    if file.exists() or not is_name(str(file)):
-        return file
-    from hfsm.library import Library
-
-    return Library([*libs, *registry.machine_folders], registry).find(str(file)) or file
 
 
 def _list(args: argparse.Namespace) -> int:
