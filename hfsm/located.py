@@ -85,7 +85,8 @@ def _message(model: type[BaseModel], path: Path_, err: ErrorDetails) -> str:
     if kind == "extra_forbidden":
         allowed = _allowed_keys(model, err["loc"][:-1])
         if last in _CALL_ONLY and "parallel-state" in err["loc"]:
-            return f"a parallel state has no {where}: its regions call behaviours (docs/REFERENCE.md#parallel-states)"
+            return (f"a parallel state has no {where}: its regions call behaviours "
+                    "(docs/REFERENCE.md#parallel-states)")
         hint = did_you_mean(str(last), allowed)
         return f"unknown key {where}" + (hint or f" (allowed: {', '.join(allowed)})")
     if kind == "missing":

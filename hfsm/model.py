@@ -28,7 +28,8 @@ class Param(Strict):
         return "default" not in self.model_fields_set
 
 
-Condition = str | bool | int | float | None  # a bare expression, or a YAML literal (docs/REFERENCE.md#expressions)
+# a bare expression, or a YAML literal (docs/REFERENCE.md#expressions)
+Condition = str | bool | int | float | None
 
 
 def condition_text(value: Condition) -> str:

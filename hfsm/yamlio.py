@@ -142,7 +142,11 @@ def parse_text(text: str, file: str) -> Document:
     return doc
 
 
-_FLOW = re.compile(r"""(?<![^\s\[{,:])'(?:[^']|'')*'|(?<![^\s\[{,:])"(?:\\.|[^"\\])*"|(?<!\S)#[^\n]*|[\[\]{}]""")
+_FLOW = re.compile(
+    r"(?<![^\s\[{,:])'(?:[^']|'')*'"  # a single-quoted string
+    r'|(?<![^\s\[{,:])"(?:\\.|[^"\\])*"'  # a double-quoted one
+    r"|(?<!\S)#[^\n]*|[\[\]{}]"  # a comment, or a bracket
+)
 
 
 def _too_deep(text: str, blocks: int, end: int) -> Pos | None:

@@ -110,11 +110,12 @@ def measure(name: str, command: list[str], trace: Path) -> LongRun:
     for line in child.stdout:
         seconds = _simulated(line)
         if seconds is not None:
-            sample = Sample(seconds, round(time.monotonic() - start, 1), round(_status_mb(child.pid, "VmRSS"), 1))
+            rss = round(_status_mb(child.pid, "VmRSS"), 1)
+            sample = Sample(seconds, round(time.monotonic() - start, 1), rss)
             result.samples.append(sample)
             print(f"{name}: {line.strip()}  rss {sample.rss_mb:.1f} MB  wall {sample.wall:.0f} s", flush=True)
         else:
-            tail = (tail + [line.rstrip()])[-40:]
+            tail = [*tail, line.rstrip()][-40:]
         result.peak_mb = max(result.peak_mb, _status_mb(child.pid, "VmHWM"))
     result.exit_code = child.wait()
     result.wall = round(time.monotonic() - start, 1)
@@ -159,8 +160,10 @@ def report(run: dict[str, Any], how: str) -> list[str]:
         return [*lines, "No progress line was printed."]
     last = samples[-1]
     lines += [
-        f"- simulated {_when(last.simulated)} in {run['wall'] / 60:.1f} min of wall time; exit {run['exit_code']}",
-        f"- resident memory: {rss[0]:.0f} MB at {_when(samples[0].simulated)}, {min(rss):.0f}-{max(rss):.0f} MB "
+        f"- simulated {_when(last.simulated)} in {run['wall'] / 60:.1f} min of wall time; "
+        f"exit {run['exit_code']}",
+        f"- resident memory: {rss[0]:.0f} MB at {_when(samples[0].simulated)}, "
+        f"{min(rss):.0f}-{max(rss):.0f} MB "
         f"over the run, {rss[-1]:.0f} MB at the last sample (peak {run['peak_mb']:.0f} MB); from the second "
         f"sample to the last {growth(samples):+.1f} MB",
         f"- trace: {run['trace_lines']} lines, {run['trace_bytes'] / 1e6:.1f} MB, "
@@ -181,7 +184,8 @@ def _when(seconds: float) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("run", choices=["room", "tararc"])
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--tables", type=int, default=6)

@@ -65,9 +65,8 @@ def _check_params(
                 mf, (*where, "with", key), "E302", f"unknown param '{key}' of '{spec.name}'{hint}", key=True
             )
         elif not _is_expr(value) and not type_ok(value, param.type):
-            message = (
-                f"param '{key}' of '{spec.name}' takes {param.type}, not {type(value).__name__} {shown(value)}"
-            )
+            kind = type(value).__name__
+            message = f"param '{key}' of '{spec.name}' takes {param.type}, not {kind} {shown(value)}"
             if isinstance(value, str) and reads_like_expression(value):
                 message += f"; write '{wrapped(value)}' for an expression"
             ctx.error(mf, (*where, "with", key), "E306", message)

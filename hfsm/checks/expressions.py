@@ -1,4 +1,5 @@
-"""Every expression of a machine compiles, and reads only names that exist where it stands (docs/REFERENCE.md#expressions, docs/REFERENCE.md#watches)."""
+"""Every expression of a machine compiles, and reads only names that exist where it stands
+(docs/REFERENCE.md#expressions, docs/REFERENCE.md#watches)."""
 
 from __future__ import annotations
 

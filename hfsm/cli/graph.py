@@ -49,7 +49,7 @@ def build_parser() -> argparse.ArgumentParser:
         description="Draw machine files: a figure per machine, the call graph, the legend.",
     )
     p.add_argument("paths", nargs="+", type=Path, metavar="PATH",
-                   help="a machine file, a folder of them, or a machine's name (an installed plug-in's or in --lib)")
+                   help="a machine file, a folder of them, or a machine's name (a plug-in's or in --lib)")
     p.add_argument("-o", "--output", type=Path, default=Path("."), metavar="DIR", help="default: .")
     p.add_argument(
         "--format",

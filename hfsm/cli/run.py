@@ -18,6 +18,7 @@ from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import UsageError, UserError
 from hfsm.load import Loaded, load, worlds_needed
 from hfsm.monitor import live
+from hfsm.names import is_name
 from hfsm.registry import Registry
 from hfsm.world import WORLDS_GROUP, NullWorld, World, WorldFactory
 
@@ -59,7 +60,9 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     p.add_argument("--check", action="store_true", help="validate and exit")
     p.add_argument("--strict", action="store_true", help="warnings are errors")
     p.add_argument("--schema", action="store_true", help="print the JSON Schema of machine files")
-    p.add_argument("--list", action="store_true", help="print every behaviour a run can call (Markdown)")
+    p.add_argument("--list", nargs="?", const="", metavar="PATTERN",
+                   help="print every behaviour a run can call (Markdown), or those whose name or world "
+                   "matches PATTERN; with FILE, the machines beside it too")
     p.add_argument("--traceback", action="store_true", help="show Python tracebacks of run-time errors")
     p.add_argument("--quiet", action="store_true", help="no summary table on stderr")
     p.add_argument("--fail-exit", action="store_true",
@@ -109,7 +112,7 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
 
         sys.stdout.write(schema_text())
         return 0
-    if args.list:
+    if args.list is not None:
         return _list(args)
     if args.file is None:
         raise UsageError("give a machine file (or --schema, or --list)")
@@ -164,7 +167,8 @@ def _list(args: argparse.Namespace) -> int:
         registry = Registry.discover()
     if args.world is not None:
         registry = registry.for_world(args.world)
-    sys.stdout.write(render(registry, [*args.lib, *registry.machine_folders]))
+    beside = [args.file.parent] if args.file is not None and args.file.is_file() else []
+    sys.stdout.write(render(registry, [*beside, *args.lib, *registry.machine_folders], args.list))
     return 0
 
 
@@ -252,7 +256,8 @@ def _run(
         return stop.exit_code
     failed = _failure_ends(result, loaded) if args.fail_exit and not result.error else []
     for agent, outcome in failed:
-        print(f"hfsm-run: {agent} ended in the failure outcome '{outcome}' (--fail-exit: exit 3)", file=sys.stderr)
+        print(f"hfsm-run: {agent} ended in the failure outcome '{outcome}' (--fail-exit: exit 3)",
+              file=sys.stderr)
     return 3 if failed else result.exit_code
 
 

@@ -105,7 +105,8 @@ class Calls(Cancelling):
         return Event(outcome, outputs)
 
     def _retry(self, frame: Frame, event: Event) -> Event | None:
-        """The callee of `frame`'s state ended with `event`: call it again (docs/REFERENCE.md#retries), or hand it on."""
+        """The callee of `frame`'s state ended with `event`: call it again (docs/REFERENCE.md#retries), or
+        hand it on."""
         state = frame.state
         while event.name in state.retry_on:
             times = self._count_of(state.retry_times, frame, "times")
@@ -137,7 +138,8 @@ class Calls(Cancelling):
         return event
 
     def _next_attempt(self, frame: Frame) -> None:
-        """`state.attempt` grows as the behaviour is called again (docs/REFERENCE.md#retries), not during the delay."""
+        """`state.attempt` grows as the behaviour is called again (docs/REFERENCE.md#retries), not during the
+        delay."""
         frame.attempt += 1
         if frame.state.watches:
             self.wake = True  # the watches read it next in the following tick: not to be skipped

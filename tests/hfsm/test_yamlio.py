@@ -5,10 +5,9 @@ import os
 from pathlib import Path
 
 import pytest
+import yaml
 from hypothesis import given
 from hypothesis import strategies as st
-
-import yaml
 
 from hfsm import yamlio
 from hfsm.errors import UserError
