@@ -14,6 +14,7 @@ from hfsm.cli import guard, report
 from hfsm.cli.fail import check_failures, fail_arg
 from hfsm.cli.history import top_params
 from hfsm.cli.named import machine_path
+from hfsm.cli.newplugin import new_plugin, schema_hint
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import UsageError, UserError
 from hfsm.load import Loaded, load, worlds_needed
@@ -63,6 +64,8 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     p.add_argument("--list", nargs="?", const="", metavar="PATTERN",
                    help="print every behaviour a run can call (Markdown), or those whose name or world "
                    "matches PATTERN; with FILE, the machines beside it too")
+    p.add_argument("--new-plugin", type=Path, metavar="DIR",
+                   help="write a plug-in package to start from in DIR (a primitive, a machine, entry points)")
     p.add_argument("--traceback", action="store_true", help="show Python tracebacks of run-time errors")
     p.add_argument("--quiet", action="store_true", help="no summary table on stderr")
     p.add_argument("--fail-exit", action="store_true",
@@ -111,11 +114,14 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         from hfsm.schema import schema_text
 
         sys.stdout.write(schema_text())
+        print(schema_hint(), file=sys.stderr)
         return 0
+    if args.new_plugin is not None:
+        return new_plugin(args.new_plugin)
     if args.list is not None:
         return _list(args)
     if args.file is None:
-        raise UsageError("give a machine file (or --schema, or --list)")
+        raise UsageError("give a machine file or name (or --list, --schema, --new-plugin DIR)")
     with stdout_to_stderr():
         registry = Registry.discover()
     if args.world is not None:
