@@ -1,4 +1,5 @@
-"""Every expression of a machine compiles, and reads only names that exist where it stands (SPEC 7, 12)."""
+"""Every expression of a machine compiles, and reads only names that exist where it stands
+(docs/REFERENCE.md#expressions, docs/REFERENCE.md#watches)."""
 
 from __future__ import annotations
 
@@ -11,7 +12,7 @@ from hfsm.expr import ExprSyntaxError, Names, compile_expr, reads
 from hfsm.library import MachineFile
 from hfsm.model import IfBranch, Watch
 from hfsm.names import did_you_mean
-from hfsm.spec import type_ok
+from hfsm.spec import shown, type_ok
 from hfsm.values import split
 
 Where = tuple[str | int, ...]
@@ -127,5 +128,5 @@ def check_expressions(ctx: CheckContext, mf: MachineFile) -> None:
 def check_param_defaults(ctx: CheckContext, mf: MachineFile) -> None:
     for name, param in mf.model.params.items():
         if not param.required and not type_ok(param.default, param.type):
-            message = f"default {param.default!r} of param '{name}' is not a {param.type}"
+            message = f"default {shown(param.default)} of param '{name}' is not a {param.type}"
             ctx.error(mf, ("params", name, "default"), "E306", message)

@@ -1,4 +1,5 @@
-"""Expressions (SPEC section 7): what they may read (scope), how they are compiled (compiler), what
+"""Expressions (docs/REFERENCE.md#expressions): what they may read (scope), how they are compiled (compiler),
+what
 they do when they run (ops), and values as text (text)."""
 
 from hfsm.expr.compiler import TIMED, compile_expr, reads

@@ -1,4 +1,5 @@
-"""What an expression may read (SPEC 7, 12): the names allowed where it stands, and the scope it runs in."""
+"""What an expression may read (docs/REFERENCE.md#expressions, docs/REFERENCE.md#watches): the names allowed
+where it stands, and the scope it runs in."""
 
 from __future__ import annotations
 
@@ -18,7 +19,8 @@ class ExprValueError(Exception):
 
 
 class Live(Protocol):
-    """What changes while a state runs (SPEC 12, 13): read only when an expression asks."""
+    """What changes while a state runs (docs/REFERENCE.md#watches, docs/REFERENCE.md#retries): read only when
+    an expression asks."""
 
     def state_time(self) -> float: ...
 

@@ -1,4 +1,5 @@
-"""Values as text (SPEC 7): strings as they are, numbers in their fewest digits, lists and dicts as JSON."""
+"""Values as text (docs/REFERENCE.md#expressions): strings as they are, numbers in their fewest digits, lists
+and dicts as JSON."""
 
 from __future__ import annotations
 
