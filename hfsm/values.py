@@ -6,7 +6,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-from hfsm.expr import ExprSyntaxError, Fn, Names, Scope, bounded, compile_expr, to_text
+from hfsm.expr import ExprSyntaxError, Fn, Names, Scope, bounded, compile_expr, short, to_text
 
 
 @dataclass(frozen=True)
@@ -19,15 +19,18 @@ class Value:
     is_expr: bool = False  # exactly "${…}": its type is known only when it runs
 
 
-def split(text: str) -> list[str | tuple[str]]:
-    """Split text into literal parts and (expression,) parts; '${' without its '}' is an error."""
-    parts: list[str | tuple[str]] = []
+def split(text: str) -> list[str | tuple[str, int]]:
+    """Split text into literal parts and (expression, its offset in text) parts; '${' without its
+    '}' is an error, at the '${'."""
+    parts: list[str | tuple[str, int]] = []
     i = 0
     while (start := text.find("${", i)) >= 0:
         end = _closing(text, start + 2)
+        if end < 0:
+            raise ExprSyntaxError(f"'${{' without its closing '}}' in '{short(text)}'", start, start + 2)
         if start > i:
             parts.append(text[i:start])
-        parts.append((text[start + 2 : end],))
+        parts.append((text[start + 2 : end], start + 2))
         i = end + 1
     if i < len(text):
         parts.append(text[i:])
@@ -49,7 +52,7 @@ def _closing(text: str, i: int) -> int:
                 return i
             depth -= 1
         i += 1
-    raise ExprSyntaxError(f"'${{' without its closing '}}' in '{text}'")
+    return -1
 
 
 def compile_text(text: str, names: Names) -> Value:
