@@ -4,8 +4,7 @@ they do when they run (ops), and values as text (text)."""
 from hfsm.expr.compiler import TIMED, compile_expr, reads, reads_at
 from hfsm.expr.ops import bounded
 from hfsm.expr.scope import NOWHERE, ExprSyntaxError, ExprValueError, Fn, Live, Names, Scope
-from hfsm.expr.source import short
-from hfsm.expr.text import format_number, to_text
+from hfsm.expr.text import format_number, short, to_text
 
 __all__ = [
     "NOWHERE",

@@ -12,7 +12,8 @@ from hfsm import bounds
 from hfsm.expr.funcs import FUNCS, is_number, kind
 from hfsm.expr.ops import BIN, CMP, LITERAL_NAMES, all_of, any_of, arith, bounded
 from hfsm.expr.scope import IN, ROOTS, ExprSyntaxError, ExprValueError, Fn, Names, Scope
-from hfsm.expr.source import Source, short
+from hfsm.expr.source import Source
+from hfsm.expr.text import short
 from hfsm.names import did_you_mean
 
 
@@ -53,17 +54,17 @@ class _Compiler:
         if node.id in ROOTS:
             shown = "in" if node.id == IN else node.id
             raise ExprSyntaxError(f"'{shown}' alone is not a value; write {shown}.NAME")
-        raise ExprSyntaxError(f"unknown name '{node.id}'{self.names.hint(node.id)}")
+        raise ExprSyntaxError(f"unknown name '{short(node.id)}'{self.names.hint(node.id)}")
 
     def c_Attribute(self, node: ast.Attribute) -> Fn:
         if not isinstance(node.value, ast.Name) or node.value.id not in ROOTS:
             inner = _snippet(node.value)
             hint = ""
             if isinstance(node.value, ast.Attribute | ast.Subscript):
-                hint = f"; a dict's entry is read with brackets: {inner}['{node.attr}']"
+                hint = f"; a dict's entry is read with brackets: {inner}['{short(node.attr)}']"
             elif isinstance(node.value, ast.Name):
                 close = difflib.get_close_matches(node.value.id, ROOTS, n=1, cutoff=0.6)
-                hint = f"; did you mean '{close[0]}.{node.attr}'?" if close else ""
+                hint = f"; did you mean '{close[0]}.{short(node.attr)}'?" if close else ""
             raise ExprSyntaxError(
                 f"'{_snippet(node)}': no attribute access but params.X, vars.X, in.X, agent.id, "
                 f"state.time, state.attempt and machine.time{hint}"
@@ -173,7 +174,7 @@ class _Compiler:
         name = node.func.id
         func = FUNCS.get(name)
         if func is None:
-            raise self.at(f"unknown function '{name}'{did_you_mean(name, FUNCS)}", node.func)
+            raise self.at(f"unknown function '{short(name)}'{did_you_mean(name, FUNCS)}", node.func)
         if node.keywords or any(isinstance(a, ast.Starred) for a in node.args):
             raise ExprSyntaxError(f"'{name}()' takes plain arguments only")
         if len(node.args) < func.least or (func.most is not None and len(node.args) > func.most):

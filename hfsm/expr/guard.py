@@ -120,10 +120,27 @@ def _syntax_error(text: str, exc: SyntaxError) -> ExprSyntaxError:
         return ExprSyntaxError(f"{exc.msg}: the expression ends too early", end, end)
     start = min(starts[line - 1] + exc.offset - 1, len(text))
     end = start + 1
+    opened = _open_at(text, start) if exc.msg.startswith("closing parenthesis") else None
+    if opened is not None:  # a closer that does not match: the opener is the one never closed
+        message = f"'{text[opened]}' is never closed: '{text[start]}' stands where it should close"
+        return ExprSyntaxError(message, opened, opened + 1)
     if exc.end_lineno and exc.end_offset and exc.end_offset > 0:
         end_line = min(exc.end_lineno, len(starts))
         end = max(end, min(starts[end_line - 1] + exc.end_offset - 1, len(text)))
     return ExprSyntaxError(exc.msg, start, end)
+
+
+def _open_at(text: str, index: int) -> int | None:
+    """The offset of the innermost bracket still open at text[index] (strings skipped)."""
+    opened: list[int] = []
+    i = 0
+    while i < index:
+        if text[i] in _OPENING:
+            opened.append(i)
+        elif text[i] in _CLOSING and opened:
+            opened.pop()
+        i = _token(text, i)[0] if text[i] in "'\"" else i + 1
+    return opened[-1] if opened else None
 
 
 def line_starts(text: str) -> list[int]:

@@ -6,6 +6,7 @@ from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass
 from typing import Any, Protocol
 
+from hfsm.expr.text import SHORT, short
 from hfsm.names import did_you_mean
 
 
@@ -91,7 +92,16 @@ class Names:
     machine_time: bool = True
     inputs: Collection[str] | None = None
 
-    def check(self, root: str, attr: str) -> None:
+    def check(self, root: str, name: str) -> None:
+        """Refuse `root.name` where it may not be read (the name shortened in the message)."""
+        try:
+            self._check(root, name)
+        except ExprSyntaxError as exc:
+            if len(name) <= SHORT:
+                raise
+            raise ExprSyntaxError(exc.message.replace(name, short(name))) from None
+
+    def _check(self, root: str, attr: str) -> None:
         if root == "agent":
             if attr != "id":
                 raise ExprSyntaxError(f"unknown name 'agent.{attr}'; only 'agent.id' exists")

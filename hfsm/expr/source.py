@@ -19,14 +19,6 @@ from hfsm.expr.scope import IN, ExprSyntaxError
 _OPERANDS = (tokenize.NUMBER, tokenize.STRING)
 _KEYWORDS = {"and", "or", "not", "in", "if", "else", "is", "lambda"}
 _GROWTH = len(IN) - len("in")
-SHORT = 60  # characters of an expression quoted in a message
-
-
-def short(text: str) -> str:
-    """Text quoted in a message: at most SHORT characters."""
-    return text if len(text) <= SHORT else text[: SHORT - 1] + "…"
-
-
 @dataclass(frozen=True)
 class Source:
     written: str  # as given
