@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import dataclass
 from typing import Any, Literal
 
@@ -38,8 +39,8 @@ def type_ok(value: Any, type_name: str) -> bool:
         return True
     if isinstance(value, bool):
         return type_name == "bool"
-    if type_name == "float":
-        return isinstance(value, int | float)
+    if type_name == "float":  # an int too large for a float is not one
+        return isinstance(value, float) or (isinstance(value, int) and abs(value) <= sys.float_info.max)
     expected = {"int": int, "bool": bool, "str": str, "list": list, "dict": dict}[type_name]
     return isinstance(value, expected)
 
@@ -52,4 +53,7 @@ def coerce(value: Any, type_name: str) -> Any:
 
 
 def is_finite_number(value: Any) -> bool:
-    return isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value)
+    """A number that is finite as a float (an integer of 400 digits is not: it overflows one)."""
+    if not isinstance(value, int | float) or isinstance(value, bool):
+        return False
+    return abs(value) <= sys.float_info.max if isinstance(value, int) else math.isfinite(value)

@@ -11,6 +11,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 import pytest
+from helpers import execute, write
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -150,3 +151,20 @@ def test_check_of_a_hostile_file_is_a_positioned_error_in_bounded_memory(tmp_pat
     assert len(got["err"]) < 1_000
     assert got["rss_kb"] < 100 * 1024  # a bound, not a measurement: ~40 MB is usual
     assert got["cpu"] < 10  # a generous bound on CPU seconds (imports included), not a timing
+
+
+@pytest.mark.parametrize(
+    "where",
+    [
+        'do: wait\n    with: {seconds: "${%s}"}\n    on: {done: done}',
+        'do: wait\n    with: {seconds: 1}\n    timer: "${%s}"\n    on: {done: done, timeout: done}',
+        'do: set\n    with: {x: "${sqrt(%s)}"}\n    on: {done: done}',
+        'do: set\n    with: {x: "${%s * 1.5}"}\n    on: {done: done}',
+    ],
+)
+def test_an_integer_too_large_for_a_float_is_an_error_at_run_time(tmp_path: Path, where: str) -> None:
+    huge = "9" * 400  # within the literal limit, beyond a float
+    path = write(tmp_path, "m", f"outcomes: [done]\nvars: {{x: 0}}\nstates:\n  s:\n    {where % huge}\n")
+    result, _ = execute(path)
+    assert result.error is not None and "Traceback" not in result.error
+    assert result.agents["robot"].outcome is None
