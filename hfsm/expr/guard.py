@@ -10,6 +10,7 @@ Every refusal is an ExprSyntaxError with the offsets of the characters at fault.
 from __future__ import annotations
 
 import ast
+import re
 
 from hfsm import bounds
 from hfsm.expr.scope import ExprSyntaxError
@@ -20,9 +21,7 @@ MAX_OPERATORS = 1_000  # operators, keyword operators, dots and brackets in one 
 MAX_DEPTH = 100  # operations nested in the parsed expression
 MAX_DIGITS = bounds.MAX_DIGITS  # digits of a number literal
 
-_OPERATOR_CHARS = frozenset("+-*/%<>=!~&|^@.")
 _KEYWORD_OPERATORS = frozenset({"not", "and", "or", "if", "else", "in", "is", "lambda"})
-_OPENING, _CLOSING = "([{", ")]}"
 
 
 def scan(text: str) -> None:
@@ -33,70 +32,42 @@ def scan(text: str) -> None:
         raise ExprSyntaxError(
             f"an expression of {len(text):,} characters: the limit is {MAX_CHARS:,}", 0, len(text)
         )
-    depth = operators = i = 0
-    while i < len(text):
-        char = text[i]
-        end, counts = _token(text, i)
-        if counts:
-            operators += 1
-            if operators > MAX_OPERATORS:
-                message = f"more than {MAX_OPERATORS:,} operators in one expression (the limit)"
-                raise ExprSyntaxError(message, i, end)
-        if char in _OPENING:
+    depth = operators = 0
+    for token in _TOKENS.finditer(text):
+        kind, start, end = token.lastgroup, token.start(), token.end()
+        if kind == "number":
+            digits = sum(map(str.isdigit, token.group()))
+            if digits > MAX_DIGITS:
+                message = f"a number literal of {digits:,} digits: the limit is {MAX_DIGITS:,}"
+                raise ExprSyntaxError(message, start, end)
+            continue
+        if kind == "string" or (kind == "name" and token.group() not in _KEYWORD_OPERATORS):
+            continue
+        if kind == "close":
+            depth = max(0, depth - 1)
+            continue
+        operators += 1
+        if operators > MAX_OPERATORS:
+            message = f"more than {MAX_OPERATORS:,} operators in one expression (the limit)"
+            raise ExprSyntaxError(message, start, end)
+        if kind == "open":
             depth += 1
             if depth > MAX_NESTING:
-                raise ExprSyntaxError(f"brackets nested more than {MAX_NESTING} deep (the limit)", i, i + 1)
-        elif char in _CLOSING:
-            depth = max(0, depth - 1)
-        i = end
+                raise ExprSyntaxError(f"brackets nested more than {MAX_NESTING} deep (the limit)", start, end)
 
 
-def _token(text: str, i: int) -> tuple[int, bool]:
-    """Where the token at text[i] ends, and whether it counts as an operator."""
-    char = text[i]
-    if char in "'\"":
-        return _string_end(text, i), False
-    if char.isdigit() or (char == "." and text[i + 1 : i + 2].isdigit()):
-        return _number_end(text, i), False
-    if char.isalpha() or char == "_":
-        end = i + 1
-        while end < len(text) and (text[end].isalnum() or text[end] == "_"):
-            end += 1
-        return end, text[i:end] in _KEYWORD_OPERATORS
-    return i + 1, char in _OPENING or char in _OPERATOR_CHARS
-
-
-def _string_end(text: str, i: int) -> int:
-    """The index after the string literal starting at i (the end of text if it is not closed)."""
-    quote = text[i] * 3 if text[i : i + 3] == text[i] * 3 else text[i]
-    j = i + len(quote)
-    while j < len(text):
-        if text[j] == "\\":
-            j += 2
-        elif text.startswith(quote, j):
-            return j + len(quote)
-        elif text[j] == "\n" and len(quote) == 1:
-            return j
-        else:
-            j += 1
-    return len(text)
-
-
-def _number_end(text: str, i: int) -> int:
-    """The index after the number literal starting at i; refuse one of more than MAX_DIGITS digits."""
-    j, digits = i, 0
-    while j < len(text):
-        char = text[j]
-        if char.isdigit():
-            digits += 1
-        elif char in "eE" and text[j + 1 : j + 2] in ("+", "-"):
-            j += 1
-        elif not (char.isalnum() or char in "._"):
-            break
-        j += 1
-    if digits > MAX_DIGITS:
-        raise ExprSyntaxError(f"a number literal of {digits:,} digits: the limit is {MAX_DIGITS:,}", i, j)
-    return j
+_TOKENS = re.compile(
+    "|".join(
+        [
+            r"""(?P<string>'{3}(?s:.*?)(?:'{3}|\Z)|"{3}(?s:.*?)(?:"{3}|\Z)|'(?:[^'\\\n]|\\.)*'?|"(?:[^"\\\n]|\\.)*"?)""",
+            r"(?P<number>\d[\w.]*?(?:[eE][+-]\d[\w.]*)?(?![\w.])|\d[\w.]*|\.\d[\w.]*)",
+            r"(?P<name>[^\W\d]\w*)",
+            r"(?P<open>[(\[{])",
+            r"(?P<close>[)\]}])",
+            r"(?P<operator>[-+*/%<>=!~&|^@.])",
+        ]
+    )
+)
 
 
 def parse(text: str) -> ast.expr:
@@ -133,13 +104,11 @@ def _syntax_error(text: str, exc: SyntaxError) -> ExprSyntaxError:
 def _open_at(text: str, index: int) -> int | None:
     """The offset of the innermost bracket still open at text[index] (strings skipped)."""
     opened: list[int] = []
-    i = 0
-    while i < index:
-        if text[i] in _OPENING:
-            opened.append(i)
-        elif text[i] in _CLOSING and opened:
+    for token in _TOKENS.finditer(text, 0, index):
+        if token.lastgroup == "open":
+            opened.append(token.start())
+        elif token.lastgroup == "close" and opened:
             opened.pop()
-        i = _token(text, i)[0] if text[i] in "'\"" else i + 1
     return opened[-1] if opened else None
 
 
