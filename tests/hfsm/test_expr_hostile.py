@@ -5,6 +5,7 @@ at the characters at fault, never MemoryError, RecursionError, ValueError or a h
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import sys
 from collections.abc import Callable
@@ -15,7 +16,8 @@ from helpers import execute, write
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from hfsm.expr import ExprSyntaxError, Names, compile_expr, guard, reads
+from hfsm.expr import ExprSyntaxError, Names, Scope, compile_expr, guard, reads
+from hfsm.values import compile_value
 
 NAMES = Names(params=["x"], vars=["n", "l", "d"])
 
@@ -90,6 +92,20 @@ def test_each_limit_names_itself_at_the_character_past_it(text: str, fragment: s
         assert error.start == at
 
 
+@pytest.mark.parametrize(
+    ("text", "fragment"),
+    [
+        ("${vars.n}" + "a" * 100_000, "a string with '${…}' of 100,009 characters"),
+        ("${vars.n}" * 1_001, "more than 1,000 '${…}' in one string"),
+        ("a ${vars.n + 1", "'${' without its closing '}'"),
+    ],
+)
+def test_strings_holding_expressions_have_limits(text: str, fragment: str) -> None:
+    with pytest.raises(ExprSyntaxError, match=re.escape(fragment)):
+        compile_value(text, NAMES)
+    assert compile_value("${vars.n}" * 1_000, NAMES).fn(Scope({}, {"n": 1}, "r")) == "1" * 1_000
+
+
 def test_just_within_the_limits_compiles() -> None:
     assert outcome("(" * 99 + "1" + ")" * 99) is None
     assert outcome("+".join(["1"] * 90)) is None
@@ -116,14 +132,16 @@ def test_errors_point_at_the_character_at_fault(text: str, char: str) -> None:
     assert text[error.start] == char, (error.message, error.start)
 
 
-HOSTILE = {
-    "minus": "-" * 10_000 + "1",
-    "nots": "not " * 20_000 + "true",
-    "sum": "+".join(["1"] * 20_000),
-    "brackets": "(" * 5_000 + "1" + ")" * 5_000,
-    "digits": "9" * 100_000,
-    "string": "'" + "a" * 1_000_000 + "'",
-    "deep": "+".join(["1"] * 1_000),
+HOSTILE = {  # the string given to `with: {x: "…"}`
+    "minus": "${" + "-" * 10_000 + "1}",
+    "nots": "${" + "not " * 20_000 + "true}",
+    "sum": "${" + "+".join(["1"] * 20_000) + "}",
+    "brackets": "${" + "(" * 5_000 + "1" + ")" * 5_000 + "}",
+    "digits": "${" + "9" * 100_000 + "}",
+    "string": "${'" + "a" * 1_000_000 + "'}",
+    "deep": "${" + "+".join(["1"] * 1_000) + "}",
+    "unclosed": "${" + "a" * 3_000_000,
+    "many": "${vars.x}" * 300_000,
 }
 MEASURE = """
 import resource, subprocess, sys
@@ -139,7 +157,7 @@ def test_check_of_a_hostile_file_is_a_positioned_error_in_bounded_memory(tmp_pat
     path = tmp_path / f"h_{name}.yaml"
     path.write_text(
         "outcomes: [done]\nvars: {x: 0}\nstates:\n  s:\n    do: set\n"
-        f'    with: {{x: "${{{HOSTILE[name]}}}"}}\n    on: {{done: done}}\n'
+        f'    with: {{x: "{HOSTILE[name]}"}}\n    on: {{done: done}}\n'
     )
     command = [sys.executable, "-c", "import json\n" + MEASURE, sys.executable, "-m", "hfsm.cli.run"]
     done = subprocess.run([*command, str(path), "--check"], capture_output=True, text=True, check=True)
