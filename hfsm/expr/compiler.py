@@ -63,7 +63,8 @@ class _Compiler:
             if isinstance(node.value, ast.Attribute | ast.Subscript):
                 hint = f"; a dict's entry is read with brackets: {inner}['{short(node.attr)}']"
             elif isinstance(node.value, ast.Name):
-                close = difflib.get_close_matches(node.value.id, ROOTS, n=1, cutoff=0.6)
+                shown = ["in" if root == IN else root for root in ROOTS]
+                close = difflib.get_close_matches(node.value.id, shown, n=1, cutoff=0.6)
                 hint = f"; did you mean '{close[0]}.{short(node.attr)}'?" if close else ""
             raise ExprSyntaxError(
                 f"'{_snippet(node)}': no attribute access but params.X, vars.X, in.X, agent.id, "
@@ -93,7 +94,8 @@ class _Compiler:
             try:
                 return container[key]
             except (KeyError, IndexError, TypeError) as exc:
-                raise ExprValueError(f"cannot take [{key!r}] of {kind(container)}: {exc}") from None
+                message = f"cannot take [{short(repr(key))}] of {kind(container)}: {short(str(exc))}"
+                raise ExprValueError(message) from None
 
         return subscript
 
