@@ -58,6 +58,7 @@ class Document:
     data: Any
     keys: dict[Path_, Pos] = field(default_factory=dict)
     values: dict[Path_, Pos] = field(default_factory=dict)
+    text: str = field(default="", repr=False)  # as read: to place a finding inside a string
 
     def pos(self, path: Path_, *, key: bool = False) -> Pos:
         """Position of the value (or key) at `path`, else of its nearest located ancestor."""
@@ -138,7 +139,7 @@ def parse_text(text: str, file: str) -> Document:
         raise UserError([Finding(file, 1, 1, "E105", "the file is empty")])
     if built.errors:
         raise UserError(built.errors)
-    doc.data, doc.keys, doc.values = built.data, built.keys, built.values
+    doc.data, doc.keys, doc.values, doc.text = built.data, built.keys, built.values, text
     return doc
 
 
