@@ -6,6 +6,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
+from hfsm import salvage
 from hfsm.checks import enforce, run_checks
 from hfsm.errors import Finding, UserError
 from hfsm.library import Library, MachineFile
@@ -84,6 +85,7 @@ def _load(
     inputs = None
     if world_inputs is not None:
         inputs = world_inputs.get(world_of(library.machines, registry, world), NO_INPUTS)
-    findings = run_checks(library.machines, registry, inputs)
+    removed = {library.machines[n].doc.file: states for n, states in library.removed.items()}
+    findings = salvage.consequences(run_checks(library.machines, registry, inputs), removed)
     warnings = enforce(library.findings + findings, strict=strict)
     return Loaded(library, roots, warnings)

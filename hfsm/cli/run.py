@@ -7,6 +7,7 @@ import logging
 import sys
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from hfsm import plugins
 from hfsm.cli import guard, report
@@ -19,6 +20,9 @@ from hfsm.monitor import live
 from hfsm.names import is_name
 from hfsm.registry import Registry
 from hfsm.world import WORLDS_GROUP, NullWorld, World, WorldFactory
+
+if TYPE_CHECKING:
+    from hfsm.runtime.run import RunResult
 
 
 def _factories() -> dict[str, WorldFactory]:
@@ -246,12 +250,28 @@ def _run(
     if not args.quiet:
         report.summary(result.stats, args.dt)
     if result.error:
-        print(f"error: {result.error}", file=sys.stderr)
+        _print_error(result, loaded)
         if args.traceback and result.traceback:
             print(result.traceback, file=sys.stderr, end="")
     if trace and not trace.failed:
         print(f"wrote {trace_path}", file=sys.stderr)
     return stop.exit_code if stop.signum else result.exit_code
+
+
+def _print_error(result: RunResult, loaded: Loaded) -> None:
+    """The run's error, at the file, line and column of the state (or expression) it happened in."""
+    from hfsm.cli.runerror import locate
+
+    found = None
+    if result.error_origin and result.error:
+        top = loaded.roots[0].name
+        found = locate(
+            loaded.machines, top, result.error_origin, result.error, result.error_agent, result.time
+        )
+    if found is None:
+        print(f"error: {result.error}", file=sys.stderr)
+    else:
+        report.findings([found])
 
 
 def entry() -> None:
