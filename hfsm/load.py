@@ -76,8 +76,23 @@ def _load(
     world: str | None,
     world_inputs: Mapping[str, Mapping[str, InputSpec]] | None,
 ) -> Loaded:
+    library, roots, findings = check_files(paths, libs, registry, world, world_inputs)
+    warnings = enforce(findings, strict=strict)
+    return Loaded(library, roots, warnings)
+
+
+def check_files(
+    paths: list[Path],
+    libs: list[Path],
+    registry: Registry | None,
+    world: str | None = None,
+    world_inputs: Mapping[str, Mapping[str, InputSpec]] | None = None,
+    texts: dict[Path, str] | None = None,
+) -> tuple[Library, list[MachineFile], list[Finding]]:
+    """Read the files and all they call and run every check: every finding, errors and warnings.
+    `texts`: files' texts as an editor holds them (by resolved path), read instead of the disk's."""
     registry = registry if registry is not None else Registry()
-    library = Library.for_file(paths[0], libs, registry)
+    library = Library.for_file(paths[0], libs, registry, texts)
     for extra in paths[1:]:
         if extra.resolve().parent not in library.search:
             library.search.insert(1, extra.resolve().parent)
@@ -87,5 +102,4 @@ def _load(
         inputs = world_inputs.get(world_of(library.machines, registry, world), NO_INPUTS)
     removed = {library.machines[n].doc.file: states for n, states in library.removed.items()}
     findings = salvage.consequences(run_checks(library.machines, registry, inputs), removed)
-    warnings = enforce(library.findings + findings, strict=strict)
-    return Loaded(library, roots, warnings)
+    return library, roots, sorted(set(library.findings + findings))
