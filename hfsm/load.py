@@ -100,6 +100,7 @@ def check_files(
     inputs = None
     if world_inputs is not None:
         inputs = world_inputs.get(world_of(library.machines, registry, world), NO_INPUTS)
-    removed = {library.machines[n].doc.file: states for n, states in library.removed.items()}
-    findings = salvage.consequences(run_checks(library.machines, registry, inputs), removed)
+    docs = {m.doc.file: m.doc for m in library.machines.values()}
+    removed = {library.machines[n].doc.file: paths for n, paths in library.removed.items()}
+    findings = salvage.consequences(run_checks(library.machines, registry, inputs), docs, removed)
     return library, roots, sorted(set(library.findings + findings))

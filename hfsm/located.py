@@ -40,8 +40,9 @@ def findings(model: type[BaseModel], doc: Document, errors: list[ErrorDetails]) 
     seen: set[tuple[Path_, bool, object]] = set()
     out: list[Finding] = []
     misspelt = _misspelt(model, doc, errors)
+    swaps = _swaps(doc, errors)
     for err in errors:
-        if err["type"] == "missing" and data_path(doc.data, err["loc"])[0] in misspelt:
+        if err["type"] == "missing" and data_path(doc.data, err["loc"])[0] in misspelt | set(swaps):
             continue  # `els:` for `else:`: the unknown key says it, with the key it meant
         path, is_key = data_path(doc.data, err["loc"])
         is_key = is_key or err["type"] == "extra_forbidden"
@@ -49,8 +50,29 @@ def findings(model: type[BaseModel], doc: Document, errors: list[ErrorDetails]) 
         if (path, is_key, named) in seen:
             continue
         seen.add((path, is_key, named))
-        out.append(doc.finding(path, "E200", _message(model, path, err), key=is_key))
+        message = _message(model, path, err)
+        meant = swaps.get(path[:-1]) if err["type"] == "extra_forbidden" else None
+        if meant is not None and "did you mean" not in message:
+            message = f"unknown key '{path[-1]}'; did you mean '{meant}'?"
+        out.append(doc.finding(path, "E200", message, key=is_key))
     return out
+
+
+def _swaps(doc: Document, errors: list[ErrorDetails]) -> dict[Path_, str]:
+    """The mappings with one unknown key and one missing key: the unknown one stands for it (`dp:`
+    for `do:`), however far apart they are spelt."""
+    unknown: dict[Path_, set[object]] = {}
+    missing: dict[Path_, set[str]] = {}
+    for err in errors:
+        if err["type"] == "extra_forbidden":
+            unknown.setdefault(data_path(doc.data, err["loc"][:-1])[0], set()).add(err["loc"][-1])
+        elif err["type"] == "missing":
+            missing.setdefault(data_path(doc.data, err["loc"])[0], set()).add(str(err["loc"][-1]))
+    return {
+        path: next(iter(keys))
+        for path, keys in missing.items()
+        if len(keys) == 1 and len(unknown.get(path, ())) == 1
+    }
 
 
 def _misspelt(model: type[BaseModel], doc: Document, errors: list[ErrorDetails]) -> set[Path_]:

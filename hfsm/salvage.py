@@ -67,15 +67,37 @@ def _order(path: Path_) -> tuple[int, list[str]]:
     return len(path), [f"{p:012d}" if isinstance(p, int) else p for p in path]
 
 
-def consequences(findings: list[Finding], removed: dict[str, set[Path_]]) -> list[Finding]:
-    """The findings less those that only follow from what was taken out (`removed`, by file): a
-    target naming a state taken out, a choice whose `else` branch was."""
-    return [f for f in findings if not _follows(f, removed.get(f.file, set()))]
+GRAPH_WARNINGS = frozenset({"W400", "W401", "W402", "W403", "W404"})
 
 
-def _follows(f: Finding, removed: set[Path_]) -> bool:
+def consequences(
+    findings: list[Finding], docs: dict[str, Document], removed: dict[str, set[Path_]]
+) -> list[Finding]:
+    """The findings less those that only follow from what was taken out of a file (`removed` and
+    `docs`, by file): a target naming a state taken out, a choice whose `else` was, a mapped
+    `timeout` whose timer was, and the warnings about the graph of states, which is not whole."""
+    return [f for f in findings if not _follows(f, docs.get(f.file), removed.get(f.file, set()))]
+
+
+def _follows(f: Finding, doc: Document | None, removed: set[Path_]) -> bool:
+    if not removed or doc is None:
+        return False
+    if f.code in GRAPH_WARNINGS:
+        return True
     if f.code in ("E301", "E316"):
         return any(f"'{p[1]}'" in f.message for p in removed if len(p) == 2 and p[0] == "states")
     if f.code == "E311":
         return any(f"choice '{p[1]}'" in f.message for p in removed if len(p) == 4 and p[2] == "choose")
+    if f.code == "E309":
+        return any(_inside(doc, str(p[1]), f.line) for p in removed if len(p) == 3 and p[2] == "timer")
     return False
+
+
+def _inside(doc: Document, state: str, line: int) -> bool:
+    """Whether `line` is in the lines of the state (from its key to the next state's)."""
+    starts = sorted(pos[0] for path, pos in doc.keys.items() if len(path) == 2 and path[0] == "states")
+    first = doc.keys.get(("states", state))
+    if first is None:
+        return False
+    after = [n for n in starts if n > first[0]]
+    return first[0] <= line < (after[0] if after else line + 1)

@@ -72,13 +72,19 @@ _CLOSE = {"{": "}", "[": "]"}
 
 
 def unclosed(exc: Any, lines: list[str]) -> tuple[int, int, str, str] | None:
-    """A `{` or `[` never closed: (line, col, code, message) at the bracket, or None.
+    """A `{`, a `[` or a quote never closed: (line, col, code, message) at it, or None.
 
     libyaml notices only where the flow collection should have ended (often the next line); its
     context mark is the bracket that was opened, and the bracket's line does not close it."""
     context = str(exc.context or "")
     start, end = exc.context_mark, exc.problem_mark
-    if "while parsing a flow" not in context or start is None or end is None:
+    if start is None or end is None:
+        return None
+    if "while scanning a quoted scalar" in context and "end of stream" in str(exc.problem):
+        quote = (lines[start.line] if start.line < len(lines) else "")[start.column : start.column + 1] or "'"
+        message = f"YAML syntax: this {quote!r} is never closed: add {quote!r} where the text ends"
+        return start.line + 1, start.column + 1, "E100", message
+    if "while parsing a flow" not in context:
         return None
     text = lines[start.line] if start.line < len(lines) else ""
     bracket = text[start.column : start.column + 1]

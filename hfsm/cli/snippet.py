@@ -60,15 +60,19 @@ def render(finding: Finding, source: list[str] | None, *, colour: bool = False) 
         return head
     raw = source[finding.line - 1]
     text = raw.replace("\t", TAB)
-    shift = raw[: max(0, finding.col - 1)].count("\t") * (len(TAB) - 1)
     start, end = span(raw, finding.col)
+    before, under = raw[: start - 1], raw[start - 1 : end - 1]
     number = str(finding.line)
     gutter = " " * len(number)
     bar = paint(_BLUE, "|")
-    carets = " " * (start - 1 + shift) + paint(_BOLD + kind, "^" * max(1, end - start))
+    carets = " " * _width(before) + paint(_BOLD + kind, "^" * max(1, _width(under)))
     return "\n".join(
         [head, f"{gutter} {bar}", f"{paint(_BLUE, number)} {bar} {text}".rstrip(), f"{gutter} {bar} {carets}"]
     )
+
+
+def _width(text: str) -> int:
+    return len(text.replace("\t", TAB))
 
 
 def _painter(colour: bool) -> Callable[[str, str], str]:
