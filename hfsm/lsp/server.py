@@ -21,7 +21,7 @@ from hfsm.library import MachineFile
 from hfsm.lsp import actions, completion, diagnostics, hover, navigation
 from hfsm.lsp.analysis import Analysis, Settings, Workspace, is_test_file
 
-_OURS = re.compile(r"^(states|outcomes|tests):", re.MULTILINE)
+_OURS = re.compile(r"\b(states|outcomes|tests)\s*:")
 
 
 def _version() -> str:
@@ -48,6 +48,7 @@ class HfsmServer(LanguageServer):
     def changed(self, uri: str, text: str) -> None:
         path = _path(uri)
         if not (is_test_file(path) or _OURS.search(text)):
+            self.text_document_publish_diagnostics(lsp.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
             return  # another YAML file (a CI file, a scenario): not ours to check
         for again in self.state.set_text(path, text):
             self.publish(again, self.state.analyse(again))

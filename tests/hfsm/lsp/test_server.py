@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import asyncio
 import sys
 from collections.abc import AsyncIterator
 from pathlib import Path
@@ -40,7 +41,7 @@ async def open_file(client: LanguageClient, path: Path, text: str | None = None)
 
 async def diagnostics_of(client: LanguageClient, path: Path) -> list[lsp.Diagnostic]:
     while uri(path) not in client.diagnostics:
-        await client.wait_for_notification(lsp.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+        await asyncio.wait_for(client.wait_for_notification(lsp.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS), 60)
     return client.diagnostics[uri(path)]
 
 
