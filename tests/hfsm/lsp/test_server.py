@@ -73,7 +73,6 @@ async def test_errors_are_published_on_open_with_their_spans_and_all_at_once(cli
         (3, 8, 12, "E300", "DiagnosticSeverity.Error"),
         (4, 4, 11, "E200", "DiagnosticSeverity.Error"),
         (5, 15, 20, "E301", "DiagnosticSeverity.Error"),
-        (6, 2, 8, "W400", "DiagnosticSeverity.Warning"),  # 'finish' is unreachable, 'fnish' being misspelt
     ]
     assert found[0].message == "unknown behaviour 'wiat'; did you mean 'wait'?"
     assert {d.source for d in found} == {"hfsm"}
