@@ -27,7 +27,8 @@ class Finding:
 
     def format(self) -> str:
         """One line, whatever text the message quotes (a line break is shown as `\\n`)."""
-        text = f"{self.file}:{self.line}:{self.col}: {self.severity.value}[{self.code}]: {self.message}"
+        label = f"{self.severity.value}[{self.code}]" if self.code else self.severity.value
+        text = f"{self.file}:{self.line}:{self.col}: {label}: {self.message}"
         lines = text.splitlines()
         return text if len(lines) == 1 else "\\n".join(lines)
 
