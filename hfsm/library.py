@@ -6,13 +6,13 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from hfsm import located
+from hfsm import located, salvage
 from hfsm.builtins import BUILTINS
 from hfsm.errors import Finding, UserError
 from hfsm.model import Machine, state_calls
 from hfsm.names import NAME_RULE, did_you_mean, is_name
 from hfsm.registry import Registry
-from hfsm.yamlio import Document, read_mapping
+from hfsm.yamlio import Document, Path_, read_mapping
 
 PROJECT_MACHINES = Path(__file__).resolve().parent.parent / "machines"
 SUFFIXES = (".yaml", ".yml")
@@ -51,25 +51,42 @@ def stem_problem(path: Path) -> str:
             f"rename it, e.g. '{better}{path.suffix}'")
 
 
+def salvage_machine_file(
+    path: Path, text: str | None = None
+) -> tuple[MachineFile | None, list[Finding], set[Path_]]:
+    """The machine of a file, built from its well-formed part; every problem found on the way; the
+    states left out. Raises UserError only when nothing of it can be read (its YAML is broken)."""
+    problems: list[Finding] = []
+    doc = read_mapping(shown(path), "a machine", text=text, kept=problems)
+    model, findings, removed = salvage.validate(Machine, doc)
+    machine = MachineFile(path.stem, path, doc, model) if model is not None else None
+    return machine, problems + findings, removed
+
+
 class Library:
     """The machines of one run: the top file's, and every machine they call, at any depth."""
 
-    def __init__(self, search: list[Path], registry: Registry) -> None:
+    def __init__(self, search: list[Path], registry: Registry, texts: dict[Path, str] | None = None) -> None:
         self.search = [p for i, p in enumerate(search) if p not in search[:i]]
         self.registry = registry
         self.machines: dict[str, MachineFile] = {}
         self.findings: list[Finding] = []
+        self.texts = texts or {}  # files' texts as an editor holds them, by resolved path
+        self.removed: dict[str, set[Path_]] = {}  # by machine: states left out, their schema being wrong
 
     @classmethod
-    def for_file(cls, top: Path, libs: list[Path], registry: Registry) -> Library:
+    def for_file(
+        cls, top: Path, libs: list[Path], registry: Registry, texts: dict[Path, str] | None = None
+    ) -> Library:
         plugins = [p.resolve() for p in registry.machine_folders]
-        return cls([top.resolve().parent, *(p.resolve() for p in libs), *plugins, PROJECT_MACHINES], registry)
+        folders = [top.resolve().parent, *(p.resolve() for p in libs), *plugins, PROJECT_MACHINES]
+        return cls(folders, registry, texts)
 
     def find(self, name: str) -> Path | None:
         for folder in self.search:
             for suffix in SUFFIXES:
                 candidate = folder / f"{name}{suffix}"
-                if candidate.is_file():
+                if candidate in self.texts or candidate.is_file():
                     return candidate
         return None
 
@@ -95,10 +112,15 @@ class Library:
 
     def _add(self, path: Path) -> MachineFile | None:
         try:
-            machine = load_machine_file(path)
+            machine, findings, removed = salvage_machine_file(path, self.texts.get(path.resolve()))
         except UserError as err:
             self.findings.extend(err.findings)
             return None
+        self.findings.extend(findings)
+        if machine is None:
+            return None
+        if removed:
+            self.removed[machine.name] = removed
         if not self._check_name(machine):
             return None  # it shadows a built-in or a primitive: reported once, then left out
         existing = self.machines.get(machine.name)

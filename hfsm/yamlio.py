@@ -23,7 +23,7 @@ from yaml import events as ev
 
 from hfsm.errors import Finding, UserError
 from hfsm.yamlbuild import MAX_DEPTH, MAX_EXPANDED, MAX_NODES, EventBuilder, Path_, Pos, TooBig
-from hfsm.yamlhints import hint
+from hfsm.yamlhints import hint, unclosed
 
 __all__ = ["MAX_BYTES", "MAX_DEPTH", "MAX_EXPANDED", "MAX_NODES", "Document", "Path_", "Pos"]
 
@@ -58,6 +58,7 @@ class Document:
     data: Any
     keys: dict[Path_, Pos] = field(default_factory=dict)
     values: dict[Path_, Pos] = field(default_factory=dict)
+    text: str = field(default="", repr=False)  # as read: to place a finding inside a string
 
     def pos(self, path: Path_, *, key: bool = False) -> Pos:
         """Position of the value (or key) at `path`, else of its nearest located ancestor."""
@@ -97,8 +98,11 @@ def decode(raw: bytes, file: str) -> str:
         ) from None
 
 
-def parse_text(text: str, file: str) -> Document:
-    """Parse and build one YAML document; raise UserError with every problem found."""
+def parse_text(text: str, file: str, *, kept: list[Finding] | None = None) -> Document:
+    """Parse and build one YAML document; raise UserError with every problem found.
+
+    With `kept`, the problems that leave a document to read (a duplicate key, a tag, a bad number)
+    are added to it instead, and the document is returned as it was built around them."""
     doc = Document(file, None)
     builder = EventBuilder(file)
     cut = _flow_cut(text)
@@ -116,6 +120,9 @@ def parse_text(text: str, file: str) -> Document:
         if deep is not None:
             message = f"collections nested more than {MAX_DEPTH} deep"
             raise UserError([Finding(file, *deep, "E106", message)]) from None
+        opened = unclosed(exc, text.splitlines())
+        if opened is not None:
+            raise UserError([Finding(file, *opened)]) from None
         line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
         message = " ".join(str(p) for p in (exc.context, exc.problem) if p)
         extra = hint(message, text.splitlines(), line, col)
@@ -136,9 +143,11 @@ def parse_text(text: str, file: str) -> Document:
     built = builder.built
     if builder.empty:
         raise UserError([Finding(file, 1, 1, "E105", "the file is empty")])
-    if built.errors:
+    if built.errors and kept is None:
         raise UserError(built.errors)
-    doc.data, doc.keys, doc.values = built.data, built.keys, built.values
+    if kept is not None:
+        kept.extend(built.errors)
+    doc.data, doc.keys, doc.values, doc.text = built.data, built.keys, built.values, text
     return doc
 
 
@@ -234,9 +243,13 @@ def _too_big(file: str, size: int) -> Finding:
     return Finding(file, 1, 1, "E106", message)
 
 
-def read_mapping(path: Path, what: str) -> Document:
-    """Read a file whose top level must be a mapping."""
-    doc = read_file(path)
+def read_mapping(
+    path: Path, what: str, *, text: str | None = None, kept: list[Finding] | None = None
+) -> Document:
+    """Read a file whose top level must be a mapping (`text`: its text, when it is not the disk's)."""
+    file = str(path)
+    text = text if text is not None else decode(read_bytes(path, file), file)
+    doc = parse_text(text, file, kept=kept)
     if not isinstance(doc.data, dict):
         kind = type(doc.data).__name__ if doc.data is not None else "null"
         raise UserError([doc.finding((), "E105", f"expected {what} (a mapping), got {kind}")])

@@ -253,7 +253,7 @@ def _run(
     if not args.quiet:
         report.summary(result.stats, args.dt)
     if result.error:
-        print(f"error: {result.error}", file=sys.stderr)
+        _print_error(result, loaded)
         if args.traceback and result.traceback:
             print(result.traceback, file=sys.stderr, end="")
     if trace and not trace.failed:
@@ -271,6 +271,22 @@ def _failure_ends(result: RunResult, loaded: Loaded) -> list[tuple[str, str]]:
     """The agents whose top machine ended in one of its failure outcomes, with the outcome."""
     failures = loaded.roots[0].model.failure_outcomes
     return [(name, end.outcome) for name, end in result.agents.items() if end.outcome in failures]
+
+
+def _print_error(result: RunResult, loaded: Loaded) -> None:
+    """The run's error, at the file, line and column of the state (or expression) it happened in."""
+    from hfsm.cli.runerror import locate
+
+    found = None
+    if result.error_origin and result.error:
+        top = loaded.roots[0].name
+        found = locate(
+            loaded.machines, top, result.error_origin, result.error, result.error_agent, result.time
+        )
+    if found is None:
+        print(f"error: {result.error}", file=sys.stderr)
+    else:
+        report.findings([found])
 
 
 def entry() -> None:

@@ -7,6 +7,13 @@ import json
 import math
 from typing import Any
 
+SHORT = 60  # characters of an expression or a name quoted in a message
+
+
+def short(text: str) -> str:
+    """Text quoted in a message: at most SHORT characters."""
+    return text if len(text) <= SHORT else text[: SHORT - 1] + "…"
+
 
 def format_number(value: float) -> str:
     if math.isfinite(value) and value == int(value) and "e" not in repr(value):

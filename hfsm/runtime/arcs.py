@@ -94,7 +94,9 @@ class Arcs(Calls):
         agent.entries += 1
         if agent.entries > MAX_ENTRIES:
             path = "/".join(frame.path())
-            raise FatalError(agent.name, f"{path}: more than {MAX_ENTRIES} state entries in one tick")
+            raise FatalError(
+                agent.name, f"{path}: more than {MAX_ENTRIES} state entries in one tick", origin=path
+            )
         if state.is_choice:
             return self._choose(frame, state)
         if bad_timer is not None:

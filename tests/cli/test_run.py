@@ -9,6 +9,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 import pytest
+from helpers import finding_lines
 
 from hfsm.cli.run import main
 
@@ -103,7 +104,7 @@ def test_bad_file_lists_every_error_with_positions(
     )
     code, out, err = run(capsys, path, "--json")
     assert code == 2 and out == ""
-    lines = err.strip().splitlines()
+    lines = finding_lines(err)
     assert lines[0].endswith("m.yaml:3:11: error[E300]: unknown behaviour 'wiat'; did you mean 'wait'?")
     assert len(lines) == 3
 
