@@ -12,7 +12,6 @@ from __future__ import annotations
 import contextlib
 import io
 import os
-import subprocess
 import sys
 import tempfile
 import time
@@ -24,7 +23,7 @@ sys.path.insert(0, str(ROOT / "tests"))
 sys.path.insert(0, str(ROOT))
 
 from hostile import corpus  # noqa: E402
-from hostile.test_hostile import HEAVY  # noqa: E402
+from hostile.test_hostile import HEAVY, peak_run  # noqa: E402
 
 from hfsm.cli import monitor, run, test  # noqa: E402
 from tools.docsection import write_section  # noqa: E402
@@ -54,13 +53,12 @@ def cpu_seconds(main: Main, argv: list[str]) -> tuple[int, float]:
 
 
 def peak_mb(path: Path, cwd: Path) -> tuple[int, float, float]:
-    """Exit code, wall seconds and peak resident MB of `hfsm-run FILE --check` in a child process."""
+    """Exit code, wall seconds and peak resident MB of `hfsm-run FILE --check` (started by a small
+    launcher: a child's peak counts what its parent had resident when it forked)."""
     command = [str(BIN / "hfsm-run"), str(path), "--check", "--world", "none"]
     start = time.monotonic()
-    with (cwd / "log.txt").open("wb") as sink:
-        child = subprocess.Popen(command, stdout=sink, stderr=sink, cwd=cwd)
-        _, status, usage = os.wait4(child.pid, 0)
-    return os.waitstatus_to_exitcode(status), time.monotonic() - start, usage.ru_maxrss / 1024
+    code, _, mb = peak_run(command, cwd)
+    return code, time.monotonic() - start, mb
 
 
 def main() -> int:

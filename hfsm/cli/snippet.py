@@ -16,8 +16,9 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TextIO
 
-from hfsm.errors import Finding, Severity
+from hfsm.errors import Finding, Severity, UserError
 from hfsm.spans import span
+from hfsm.yamlio import read_bytes
 
 _RED, _YELLOW, _BLUE, _BOLD, _RESET = "\x1b[31m", "\x1b[33m", "\x1b[34m", "\x1b[1m", "\x1b[0m"
 TAB = "    "
@@ -38,9 +39,9 @@ def file_lines() -> Source:
 
     def lines(file: str) -> list[str] | None:
         if file not in cache:
-            try:
-                cache[file] = Path(file).read_text(encoding="utf-8").splitlines()
-            except (OSError, UnicodeDecodeError):
+            try:  # a regular file of a readable size only: never blocks on a FIFO or reads 50 MB again
+                cache[file] = read_bytes(Path(file), file).decode("utf-8").splitlines()
+            except (UserError, UnicodeDecodeError):
                 cache[file] = None
         return cache[file]
 
