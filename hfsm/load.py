@@ -78,8 +78,7 @@ def _load(
     registry = registry if registry is not None else Registry()
     library = Library.for_file(paths[0], libs, registry)
     for extra in paths[1:]:
-        if extra.resolve().parent not in library.search:
-            library.search.insert(1, extra.resolve().parent)
+        library.add_user_folder(extra.resolve().parent)
     roots = library.load(paths)
     inputs = None
     if world_inputs is not None:

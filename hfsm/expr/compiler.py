@@ -42,14 +42,15 @@ class _Compiler:
         if node.id in ROOTS:
             shown = "in" if node.id == IN else node.id
             raise ExprSyntaxError(f"'{shown}' alone is not a value; write {shown}.NAME")
-        hint = did_you_mean(node.id, ["true", "false", "null", "params", "vars", "agent", "state", "machine"])
+        roots = ["true", "false", "null", "params", "vars", "agent", "state", "machine", "scope"]
+        hint = did_you_mean(node.id, roots)
         raise ExprSyntaxError(f"unknown name '{node.id}'{hint}")
 
     def c_Attribute(self, node: ast.Attribute) -> Fn:
         if not isinstance(node.value, ast.Name) or node.value.id not in ROOTS:
             raise ExprSyntaxError(
-                f"'{_snippet(node)}': only params.X, vars.X, in.X, agent.id, state.time, state.attempt "
-                "and machine.time"
+                f"'{_snippet(node)}': only params.X, vars.X, in.X, agent.id, state.time, state.attempt, "
+                "machine.time, scope.name and scope.agents"
             )
         root, attr = node.value.id, node.attr
         self.names.check(root, attr)
@@ -63,6 +64,8 @@ class _Compiler:
             return lambda s: s.live.input(attr)
         if root == "machine":
             return lambda s: s.live.machine_time()
+        if root == "scope":
+            return (lambda s: s.live.scope_name()) if attr == "name" else (lambda s: s.live.scope_agents())
         if attr == "time":
             return lambda s: s.live.state_time()
         return lambda s: s.live.state_attempt()

@@ -28,6 +28,10 @@ class Live(Protocol):
 
     def input(self, name: str) -> Any: ...
 
+    def scope_name(self) -> str: ...
+
+    def scope_agents(self) -> list[str]: ...
+
 
 class _Nowhere:
     """The live values of a scope outside any running state: reading one is a run-time error."""
@@ -44,6 +48,12 @@ class _Nowhere:
     def input(self, name: str) -> Any:
         raise ExprValueError(f"'in.{name}' cannot be read here")
 
+    def scope_name(self) -> str:
+        raise ExprValueError("'scope.name' cannot be read here")
+
+    def scope_agents(self) -> list[str]:
+        raise ExprValueError("'scope.agents' cannot be read here")
+
 
 NOWHERE: Live = _Nowhere()
 
@@ -59,8 +69,8 @@ class Scope:
 Fn = Callable[[Scope], Any]
 
 IN = "__in__"  # what `in.x` reads as once tokenized: `in` is a Python keyword
-ROOTS = ("params", "vars", "agent", "state", "machine", IN)
-LIVE = {"state": ("time", "attempt"), "machine": ("time",)}
+ROOTS = ("params", "vars", "agent", "state", "machine", "scope", IN)
+LIVE = {"state": ("time", "attempt"), "machine": ("time",), "scope": ("name", "agents")}
 
 
 @dataclass(frozen=True)

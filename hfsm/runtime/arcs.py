@@ -6,6 +6,7 @@ from hfsm.expr import ExprValueError
 from hfsm.runtime.agent import Event, Frame, Region
 from hfsm.runtime.calls import Calls
 from hfsm.runtime.core import MAX_ENTRIES, FatalError
+from hfsm.runtime.scopes import open_scope, short
 from hfsm.runtime.states import RState
 
 
@@ -76,7 +77,7 @@ class Arcs(Calls):
         if event.goto is not None:
             return event.goto
         if event.message is not None and event.name != "error":
-            return state.msg_arcs[event.name]
+            return state.msg_arcs[short(event.name)]
         if not event.origin:
             event.origin = "/".join(frame.path())
             self.emit(frame.agent, frame.path(), "error", message=event.error)
@@ -99,8 +100,14 @@ class Arcs(Calls):
             return self._choose(frame, state)
         if bad_timer is not None:
             return bad_timer
+        frame.inner = frame.radio
+        if state.scope is not None:
+            radio = open_scope(state.scope, frame.scope, agent.name, frame.radio, self.team.order)
+            if radio.__class__ is str:
+                return Event("error", error=radio)  # type: ignore[arg-type]
+            frame.inner = radio  # type: ignore[assignment]
         if agent.mailbox and state.msg_arcs:
-            message = agent.take_message(state.msg_arcs)
+            message = agent.take_message(state.msg_arcs, frame.radio.prefix)
             if message is not None:
                 return Event(message.name, message=message)
         if state.plain:
