@@ -178,7 +178,8 @@ class Library:
             return None
         elif name in self.registry.elsewhere:
             world = self.registry.elsewhere[name]
-            self._report(caller, name, "E300", f"'{name}' is a primitive of --world {world}, not of this run's world")
+            message = f"'{name}' is a primitive of --world {world}, not of this run's world"
+            self._report(caller, name, "E300", message)
         else:
             hint = did_you_mean(name, self.known_names(folders))
             self._report(caller, name, "E300", f"unknown behaviour '{name}'{hint}")

@@ -71,7 +71,7 @@ class ScopeSpec(Strict):
     """A team within the team for what the state runs (SPEC 16): a private radio with these agents."""
 
     name: str = Field(description="a name, or an expression giving one; qualified inside an outer scope")
-    agents: list[Any] | str = Field(description="agent ids of the enclosing scope, or an expression giving them")
+    agents: list[Any] | str = Field(description="agent ids of the enclosing scope, or an expression of them")
 
 
 class CallState(Strict):

@@ -68,6 +68,8 @@ class Frame:
     entered: int  # the tick its current state was entered (set on entering it, as the two below)
     state_deadline: int | None
     attempt: int  # the call of that state's behaviour, from 1 (SPEC 13)
+    radio: Radio  # the scope its machine runs under (SPEC 16)
+    inner: Radio  # the scope its current state gives what it runs: `radio`, or the state's `scope:`
 
     def __init__(
         self, machine: RMachine, params: dict[str, Any], agent: Agent, up: Frame | Region | None
@@ -86,11 +88,10 @@ class Frame:
         self.retry_at: int | None = None  # the tick a retry's delay ends in
         self.started = agent.clock.tick
         self.below: Any = None  # Activity | Frame | list[Region] | None
-        # The scope its machine runs under, and the one its current state gives what it runs (SPEC 16).
         if up is None:
-            self.radio: Radio = agent.radio
+            self.radio = agent.radio
         else:
-            self.radio = up.inner if up.__class__ is Frame else up.owner.inner  # type: ignore[union-attr]
+            self.radio = up.inner if isinstance(up, Frame) else up.owner.inner
         self.inner = self.radio
         self.in_with = False  # a state's `with` being read: `scope.*` is the state's own scope
 

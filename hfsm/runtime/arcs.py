@@ -89,7 +89,8 @@ class Arcs(Calls):
         frame.entered = self.tick
         frame.state_deadline = None
         frame.attempt = 1
-        bad_timer = None if state.timer is None else self._start_timer(frame, state)
+        frame.inner = frame.radio
+        bad_timer = None if state.timer is None and state.scope is None else self._start_timer(frame, state)
         if self.records is not None:
             self.records.enter(frame, state)
         agent.entries += 1
@@ -100,12 +101,6 @@ class Arcs(Calls):
             return self._choose(frame, state)
         if bad_timer is not None:
             return bad_timer
-        frame.inner = frame.radio
-        if state.scope is not None:
-            radio = open_scope(state.scope, frame.scope, agent.name, frame.radio, self.team.order)
-            if radio.__class__ is str:
-                return Event("error", error=radio)  # type: ignore[arg-type]
-            frame.inner = radio  # type: ignore[assignment]
         if agent.mailbox and state.msg_arcs:
             message = agent.take_message(state.msg_arcs, frame.radio.prefix)
             if message is not None:
@@ -124,12 +119,19 @@ class Arcs(Calls):
         return event
 
     def _start_timer(self, frame: Frame, state: RState) -> Event | None:
-        """The state's timer set (before its `enter` is written, which shows when it fires); or the
-        error its expression gave, taken once the state is entered."""
-        ticks = self._ticks(state.timer, frame)
-        if ticks.__class__ is Event:
-            return ticks
-        frame.state_deadline = self.tick + ticks  # type: ignore[operator]
+        """The state's timer set (before its `enter` is written, which shows when it fires), then its
+        `scope:` read (SPEC 16: what it runs is under it until the state is left); or the error
+        either gave, taken once the state is entered."""
+        if state.timer is not None:
+            ticks = self._ticks(state.timer, frame)
+            if ticks.__class__ is Event:
+                return ticks
+            frame.state_deadline = self.tick + ticks  # type: ignore[operator]
+        if state.scope is not None:
+            radio = open_scope(state.scope, frame.scope, frame.agent.name, frame.radio, self.team.order)
+            if isinstance(radio, str):
+                return Event("error", error=radio)
+            frame.inner = radio
         return None
 
     def _choose(self, frame: Frame, state: RState) -> Event:

@@ -99,4 +99,4 @@ def members(radio: Radio, me: str, named: list[Any]) -> list[str] | str:
 def radio_at(where: Any) -> Radio:
     """The scope a behaviour runs under: its call state's (a frame's `inner`), or its region's."""
     inner: Radio | None = getattr(where, "inner", None)
-    return inner if inner is not None else where.owner.inner  # type: ignore[no-any-return]
+    return inner if inner is not None else where.owner.inner
