@@ -7,6 +7,9 @@ from typing import Annotated, Any
 from pydantic import ConfigDict, Discriminator, Field, StringConstraints, Tag
 
 from hfsm.model import Name, Strict
+from hfsm.names import NAME_PATTERN
+
+ScopeName = Annotated[str, StringConstraints(pattern=rf"^{NAME_PATTERN[1:-1]}(/{NAME_PATTERN[1:-1]})*$")]
 
 Seconds = Annotated[float, Field(ge=0, allow_inf_nan=False)]
 StatePath = Annotated[str, StringConstraints(pattern=r"^[a-z][a-z0-9_]*(/[a-z][a-z0-9_]*)*$")]
@@ -58,6 +61,13 @@ class MessageIn(Strict):
     message: Name
     to: Name | None = Field(default=None, description="absent: every agent of the test but the sender")
     data: dict[str, Any] = Field(default_factory=dict)
+    scope: ScopeName | None = Field(
+        default=None, description="sent under this scope (SPEC 16), qualified: `pair_a` or `room/pair_a`"
+    )
+
+    @property
+    def qualified(self) -> str:
+        return f"{self.scope}/{self.message}" if self.scope else self.message
 
 
 class FailAt(Strict):
@@ -87,6 +97,7 @@ Time = Seconds | TimeRange
 
 class Sent(Strict):
     message: Name
+    scope: ScopeName | None = Field(default=None, description="sent under this scope (SPEC 16), qualified")
     to: Name | None = None
     data: dict[str, Any] | None = Field(default=None, description="these fields, with these values")
     at: Time | None = None
