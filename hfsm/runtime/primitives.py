@@ -66,6 +66,10 @@ class RunContext:
             self.wait()
         return True
 
+    @property
+    def scope(self) -> str:
+        return radio_at(self._where).name
+
     def receive(self, name: str) -> Message | None:
         return self._agent.take_message((name,), radio_at(self._where).prefix)
 

@@ -100,3 +100,10 @@ def radio_at(where: Any) -> Radio:
     """The scope a behaviour runs under: its call state's (a frame's `inner`), or its region's."""
     inner: Radio | None = getattr(where, "inner", None)
     return inner if inner is not None else where.owner.inner
+
+
+def run_under(agents: list[Any], name: str, members: tuple[str, ...]) -> None:
+    """Every agent's top machine runs under scope `name` with `members` (each leaves itself out), as
+    if called by a state with that `scope:`: a behaviour test of a machine written for a pair."""
+    for agent in agents:
+        agent.radio = Radio(name, tuple(m for m in members if m != agent.name))

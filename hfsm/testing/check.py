@@ -111,6 +111,7 @@ class _FileChecker:
             expect=expect,
             expect_path=(*at, "expect"),
             pruned=pruned,
+            scope=self._scope(case, at),
         )
 
     # --- the machine and its params ------------------------------------------------------------
@@ -238,6 +239,10 @@ class _FileChecker:
                 "add each to `stand_ins:` (tests run without a world)",
             )  # fmt: skip
         return set(models) - run
+
+    def _scope(self, case: Case, at: Path_) -> tuple[str, tuple[str, ...]] | None:
+        scope, _ = self._pick(case, "scope", at)
+        return None if scope is None else (scope.name, tuple(scope.agents))
 
     # --- scripted inputs and messages ----------------------------------------------------------
 

@@ -83,7 +83,9 @@ class PartnerAt(Strict):
     from then on it sends its notice to every agent of the test, as an agent waiting there does."""
 
     agent: Name = Field(description="its name: not an agent of the test")
-    barrier: str = Field(min_length=1, description="the barrier's name")
+    barrier: str | None = Field(
+        default=None, min_length=1, description="the barrier's name (none: a team mate that never arrives)"
+    )
     at: Seconds = 0
 
 
@@ -141,6 +143,13 @@ class Expect(AgentExpect):
     agents: dict[Name, AgentExpect] = Field(default_factory=dict)
 
 
+class ScopeIn(Strict):
+    """The scope the machine under test runs under, as if a caller's state had `scope:` (SPEC 16)."""
+
+    name: ScopeName = Field(description="its qualified name: `pair_t1`, or `room/pair_t1` for a nested one")
+    agents: list[Name] = Field(description="its agents; each agent of the test leaves itself out")
+
+
 class Setup(Strict):
     """What a case runs: given in the file for every case, or in a case, which then wins key by key."""
 
@@ -161,6 +170,7 @@ class Setup(Strict):
     partners: list[PartnerAt] | None = Field(
         default=None, description="scripted team mates that arrive at barriers (each entry one round)"
     )
+    scope: ScopeIn | None = Field(default=None, description="run the machine under test under this scope")
 
 
 class Case(Setup):
