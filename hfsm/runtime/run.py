@@ -38,7 +38,7 @@ class RunOptions:
     max_time: float = 3600.0
     failures: Sequence[Failure] = ()
     agent_params: Mapping[str, dict[str, Any]] = field(default_factory=dict)  # an agent's own params
-    scope: tuple[str, tuple[str, ...]] | None = None  # (name, agents): the top machine runs under it
+    scopes: Mapping[str, tuple[str, tuple[str, ...]]] = field(default_factory=dict)  # agent -> scope
 
 
 def run(program: Program, world: World, options: RunOptions, trace: TraceSink | None = None) -> RunResult:
@@ -47,8 +47,8 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
     for agent in agents:
         agent.robot = world.handle(agent.name)
     engine = Engine(agents, world, program.dt, trace)
-    if options.scope is not None:
-        run_under(agents, *options.scope)
+    if options.scopes:
+        run_under(agents, options.scopes)
     try:
         error, tb = _loop(engine, program, options, world)
         if error:

@@ -102,8 +102,11 @@ def radio_at(where: Any) -> Radio:
     return inner if inner is not None else where.owner.inner
 
 
-def run_under(agents: list[Any], name: str, members: tuple[str, ...]) -> None:
-    """Every agent's top machine runs under scope `name` with `members` (each leaves itself out), as
-    if called by a state with that `scope:`: a behaviour test of a machine written for a pair."""
+def run_under(agents: list[Any], scopes: Mapping[str, tuple[str, tuple[str, ...]]]) -> None:
+    """An agent's top machine runs under the scope `scopes` gives it, (name, agents), each agent
+    leaving itself out, as if called by a state with that `scope:`: a run of a machine written for
+    a pair (a behaviour test, a room of pairs told their partners)."""
     for agent in agents:
-        agent.radio = Radio(name, tuple(m for m in members if m != agent.name))
+        if agent.name in scopes:
+            name, members = scopes[agent.name]
+            agent.radio = Radio(name, tuple(m for m in members if m != agent.name))
