@@ -111,7 +111,7 @@ class _FileChecker:
             expect=expect,
             expect_path=(*at, "expect"),
             pruned=pruned,
-            scope=self._scope(case, at),
+            scopes=self._scopes(case, at),
         )
 
     # --- the machine and its params ------------------------------------------------------------
@@ -240,9 +240,14 @@ class _FileChecker:
             )  # fmt: skip
         return set(models) - run
 
-    def _scope(self, case: Case, at: Path_) -> tuple[str, tuple[str, ...]] | None:
-        scope, _ = self._pick(case, "scope", at)
-        return None if scope is None else (scope.name, tuple(scope.agents))
+    def _scopes(self, case: Case, at: Path_) -> dict[str, tuple[str, tuple[str, ...]]]:
+        """Each agent's scope: the first of `scopes` that lists it."""
+        scopes, _ = self._pick(case, "scopes", at)
+        given: dict[str, tuple[str, tuple[str, ...]]] = {}
+        for scope in scopes or []:
+            for agent in scope.agents:
+                given.setdefault(agent, (scope.name, tuple(scope.agents)))
+        return given
 
     # --- scripted inputs and messages ----------------------------------------------------------
 

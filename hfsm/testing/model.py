@@ -144,10 +144,11 @@ class Expect(AgentExpect):
 
 
 class ScopeIn(Strict):
-    """The scope the machine under test runs under, as if a caller's state had `scope:` (SPEC 16)."""
+    """A scope the machine under test runs under, for the agents it lists, as if a caller's state
+    had `scope:` (SPEC 16)."""
 
     name: ScopeName = Field(description="its qualified name: `pair_t1`, or `room/pair_t1` for a nested one")
-    agents: list[Name] = Field(description="its agents; each agent of the test leaves itself out")
+    agents: list[Name] = Field(min_length=1, description="its agents; each of them runs under it, leaving itself out")
 
 
 class Setup(Strict):
@@ -170,7 +171,9 @@ class Setup(Strict):
     partners: list[PartnerAt] | None = Field(
         default=None, description="scripted team mates that arrive at barriers (each entry one round)"
     )
-    scope: ScopeIn | None = Field(default=None, description="run the machine under test under this scope")
+    scopes: list[ScopeIn] | None = Field(
+        default=None, description="teams: each agent of the test runs the machine under the scope that lists it"
+    )
 
 
 class Case(Setup):

@@ -33,9 +33,8 @@ def run_case(plan: CasePlan) -> CaseResult:
     world = ScriptedWorld(inputs, messages, plan.agents, plan.dt, plan.partners)
     trace = ListTrace()
     failing = [Failure(f.agent, f.at, f.reason) for f in plan.fail]
-    scopes = dict.fromkeys(plan.agents, plan.scope) if plan.scope else {}
     options = RunOptions(
-        plan.top, plan.agents, plan.params, plan.seed, plan.max_time, failing, plan.agent_params, scopes
+        plan.top, plan.agents, plan.params, plan.seed, plan.max_time, failing, plan.agent_params, plan.scopes
     )
     try:
         result = run(program, world, options, trace)
