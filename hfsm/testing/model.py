@@ -148,7 +148,7 @@ class ScopeIn(Strict):
     had `scope:` (SPEC 16)."""
 
     name: ScopeName = Field(description="its qualified name: `pair_t1`, or `room/pair_t1` for a nested one")
-    agents: list[Name] = Field(min_length=1, description="its agents; each of them runs under it, leaving itself out")
+    agents: list[Name] = Field(min_length=1, description="its agents; each runs under it, leaving itself out")
 
 
 class Setup(Strict):
@@ -172,7 +172,7 @@ class Setup(Strict):
         default=None, description="scripted team mates that arrive at barriers (each entry one round)"
     )
     scopes: list[ScopeIn] | None = Field(
-        default=None, description="teams: each agent of the test runs the machine under the scope that lists it"
+        default=None, description="teams: each agent runs the machine under the scope that lists it"
     )
 
 
