@@ -69,7 +69,7 @@ class Retry(Strict):
 
 
 class ScopeSpec(Strict):
-    """A team within the team for what the state runs (SPEC 16): a private radio with these agents."""
+    """A team within the team for what the state runs: a private radio with these agents."""
 
     name: str = Field(description="a name, or an expression giving one; qualified inside an outer scope")
     agents: list[Any] | str = Field(description="agent ids of the enclosing scope, or an expression of them")

@@ -197,7 +197,7 @@ class Agent:
 
     def take_message(self, names: Any, prefix: str = "") -> Message | None:
         """Remove and return the earliest message whose name is in `names`, sent under the scope
-        whose names begin with `prefix` (SPEC 16): `scope/name`, or a bare name outside every scope."""
+        whose names begin with `prefix`: `scope/name`, or a bare name outside every scope."""
         if not prefix:
             for i, message in enumerate(self.mailbox):
                 if message.name in names:

@@ -122,7 +122,7 @@ class Arcs(Calls):
 
     def _start_timer(self, frame: Frame, state: RState) -> Event | None:
         """The state's timer set (before its `enter` is written, which shows when it fires), then its
-        `scope:` read (SPEC 16: what it runs is under it until the state is left); or the error
+        `scope:` read (REFERENCE.md#scopes: what it runs is under it until the state is left); or the error
         either gave, taken once the state is entered."""
         if state.timer is not None:
             ticks = self._ticks(state.timer, frame)

@@ -32,7 +32,7 @@ class Calls(Cancelling):
         return float(seconds)
 
     def _params(self, callee: Callee, frame: Frame) -> dict[str, Any] | Event:
-        frame.in_with = True  # `scope.*` in a `with` reads the state's own scope (SPEC 16)
+        frame.in_with = True  # `scope.*` in a `with` reads the state's own scope (docs/REFERENCE.md#scopes)
         try:
             given = {k: v.fn(frame.scope) for k, v in callee.with_.items()}
         except ExprValueError as exc:

@@ -63,7 +63,7 @@ class MessageIn(Strict):
     to: Name | None = Field(default=None, description="absent: every agent of the test but the sender")
     data: dict[str, Any] = Field(default_factory=dict)
     scope: ScopeName | None = Field(
-        default=None, description="sent under this scope (SPEC 16), qualified: `pair_a` or `room/pair_a`"
+        default=None, description="sent under this scope, qualified: `pair_a` or `room/pair_a`"
     )
 
     @property
@@ -102,7 +102,7 @@ Time = Seconds | TimeRange
 
 class Sent(Strict):
     message: Name
-    scope: ScopeName | None = Field(default=None, description="sent under this scope (SPEC 16), qualified")
+    scope: ScopeName | None = Field(default=None, description="sent under this scope, qualified")
     to: Name | None = None
     data: dict[str, Any] | None = Field(default=None, description="these fields, with these values")
     at: Time | None = None
@@ -149,7 +149,7 @@ class Expect(AgentExpect):
 
 class ScopeIn(Strict):
     """A scope the machine under test runs under, for the agents it lists, as if a caller's state
-    had `scope:` (SPEC 16)."""
+    had `scope:` (docs/REFERENCE.md#scopes)."""
 
     name: ScopeName = Field(description="its qualified name: `pair_t1`, or `room/pair_t1` for a nested one")
     agents: list[Name] = Field(min_length=1, description="its agents; each runs under it, leaving itself out")
