@@ -75,6 +75,9 @@ class CallState(Strict):
     on: dict[Name, Name] = Field(default_factory=dict, description="event -> state or outcome")
     watch: list[Watch] = Field(default_factory=list)
     retry: Retry | None = None
+    autonomy: dict[str, str] = Field(
+        default_factory=dict, description="event -> level (off, low, high, full) below which its arc is held"
+    )
     doc: str | None = None
 
 
@@ -117,6 +120,9 @@ class ParallelState(Strict):
     timer: Timer | None = None
     on: dict[Name, Name] = Field(default_factory=dict, description="event -> state or outcome")
     watch: list[Watch] = Field(default_factory=list)
+    autonomy: dict[str, str] = Field(
+        default_factory=dict, description="event or join:TARGET -> level below which its arc is held"
+    )
     doc: str | None = None
 
 

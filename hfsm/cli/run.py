@@ -9,9 +9,11 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from hfsm import plugins
+from hfsm.autonomy import LEVELS, Decision, level_of
 from hfsm.cli import guard, report
 from hfsm.cli.fail import check_failures, fail_arg
 from hfsm.cli.history import top_params
+from hfsm.cli.operator_file import read_decisions
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import UsageError, UserError
 from hfsm.load import Loaded, load, worlds_needed
@@ -65,6 +67,19 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
         default=[],
         metavar="AGENT@S",
         help="fail that agent S seconds into the run (repeatable)",
+    )
+    p.add_argument(
+        "--autonomy",
+        choices=LEVELS,
+        default="full",
+        help="the run's autonomy level: arcs that need more wait for the operator (default full)",
+    )
+    p.add_argument(
+        "--operator",
+        type=Path,
+        metavar="FILE",
+        help="the operator's decisions: a YAML list of {t, agent, do, event, level}, or a trace "
+        "(.jsonl) whose operator records are replayed",
     )
     for factory in factories.values():
         factory.add_arguments(p.add_argument_group(f"--world {factory.name}"))
@@ -139,12 +154,13 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
     try:
         agents = _agents(args, world)
         check_failures(args.fail, agents)
+        decisions = read_decisions(args.operator, agents) if args.operator else []
         trace_path = args.trace or world.default_trace
         outputs = [("--trace", trace_path)] if trace_path else []
         outputs += [("--video", Path(p)) for p in getattr(world, "outputs", ())]
         guard.check_outputs(outputs, _inputs(args, loaded))
         started = True
-        return _run(args, loaded, registry, world, params, agents, trace_path)
+        return _run(args, loaded, registry, world, params, agents, trace_path, decisions)
     finally:
         files = guard.close_world(world)
         for path in files if started else ():
@@ -217,13 +233,15 @@ def _run(
     params: dict[str, object],
     agents: list[str],
     trace_path: Path | None,
+    decisions: list[Decision],
 ) -> int:
     from hfsm.cli.stop import stoppable  # not needed to check: loaded only to run
     from hfsm.cli.tracefile import TraceFile
     from hfsm.runtime.program import Program
     from hfsm.runtime.run import RunOptions, run
 
-    options = RunOptions(loaded.roots[0].name, agents, params, args.seed, args.max_time, args.fail)
+    options = RunOptions(loaded.roots[0].name, agents, params, args.seed, args.max_time, args.fail,
+                         autonomy=level_of(args.autonomy), decisions=decisions)
     program = Program(loaded.machines, registry, args.dt)
     trace = TraceFile(trace_path) if trace_path else None
     sink, monitor = live.sinks(args, trace, loaded, registry, loaded.roots[0].name, world)

@@ -45,6 +45,9 @@ class Event:
         self.message = message
 
 
+HELD = Event("held")  # a state entered holds an arc at once (SPEC 17): it waits, nothing is taken
+
+
 class Activity(Protocol):
     """A running built-in or primitive: a leaf of an agent's tree."""
 
@@ -60,7 +63,7 @@ class Frame:
     """One running machine: its memory, its current state, its timers, and what runs below it."""
 
     __slots__ = (
-        "_prefix", "_scope", "agent", "attempt", "below", "deadline", "entered", "machine", "params",
+        "_prefix", "_scope", "agent", "attempt", "below", "deadline", "entered", "held", "machine", "params",
         "retry_at", "started", "state", "state_deadline", "text", "up", "vars", "vars_shown",
     )  # fmt: skip
     entered: int  # the tick its current state was entered (set on entering it, as the two below)
@@ -84,6 +87,7 @@ class Frame:
         self.retry_at: int | None = None  # the tick a retry's delay ends in
         self.started = agent.clock.tick
         self.below: Any = None  # Activity | Frame | list[Region] | None
+        self.held: Any = None  # the arc its state holds for the operator (a holds.Hold), SPEC 17
 
     @property
     def scope(self) -> Scope:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from hfsm.autonomy import FULL
 from hfsm.runtime.agent import Agent, AgentResult, Event, Frame, Region
 from hfsm.runtime.barrier import Team
 from hfsm.runtime.program import span_ticks
@@ -45,6 +46,8 @@ class Core:
         self.spans: dict[float, int] = {}  # seconds -> ticks, for spans seen before
         self.team = Team(self)  # barriers (SPEC 14)
         self.wake = False  # vars changed after a state's watches were tried: its next tick is due
+        self.level = FULL  # the run's autonomy level (SPEC 17)
+        self.approved: Event | None = None  # the event the operator answered: taken, not held again
 
     @property
     def time(self) -> float:
@@ -108,6 +111,12 @@ class Core:
         raise NotImplementedError
 
     def _enter(self, frame: Frame, state: RState) -> Event | None:
+        raise NotImplementedError
+
+    def _held(self, frame: Frame, state: RState, event: Event) -> bool:
+        raise NotImplementedError
+
+    def _message_held(self, frame: Frame, state: RState) -> bool:
         raise NotImplementedError
 
     def _start_regions(self, frame: Frame) -> Event | None:

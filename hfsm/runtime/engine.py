@@ -13,7 +13,7 @@ from typing import Any
 from hfsm.primitive import Message
 from hfsm.runtime.agent import Agent, Event, Frame, Region, leaves
 from hfsm.runtime.core import FatalError
-from hfsm.runtime.parallel import Parallel
+from hfsm.runtime.holds import Holds
 from hfsm.runtime.program import RMachine
 from hfsm.runtime.states import RState
 from hfsm.world import NOTICE
@@ -21,7 +21,7 @@ from hfsm.world import NOTICE
 __all__ = ["Engine", "FatalError"]
 
 
-class Engine(Parallel):
+class Engine(Holds):
     def start(self, agent: Agent, top: RMachine, params: dict[str, Any]) -> None:
         agent.started = True
         self.emit(agent, [agent.top], "enter")
@@ -37,15 +37,15 @@ class Engine(Parallel):
             if frame.deadline == k:
                 self._machine_timeout(frame)
                 return
-            if frame.state_deadline == k:
-                self.emit(frame.agent, frame.path(), "timeout", timer="state")
-                self._settle(frame, self._cancelled(frame, "timeout", Event("timeout")))
-                return
             state = frame.state
-            if frame.agent.mailbox and state.msg_arcs and self._message_arc(frame, state):
+            if frame.state_deadline == k:
+                self._state_timeout(frame)
                 return
-            if state.stepped and self._watched(frame, k):
-                return
+            if frame.held is None:
+                if frame.agent.mailbox and state.msg_arcs and self._message_arc(frame, state):
+                    return
+                if state.stepped and self._watched(frame, k):
+                    return
             below = frame.below
             cls = below.__class__
             if cls is Frame:
@@ -56,17 +56,32 @@ class Engine(Parallel):
             elif below is not None and (below.deadline is None or below.deadline <= k):
                 ended = below.advance(k)
                 if ended is not None:
-                    frame.below = None
-                    if state.retry_on:
-                        self._after_call(frame, ended)
-                    else:  # _settle's work, without its call
-                        ended = self._run(frame, ended)
-                        if ended is not None:
-                            self._pass_up(frame, ended)
+                    self._ended(frame, ended)
             return
 
+    def _ended(self, frame: Frame, ended: Event) -> None:
+        """The behaviour of `frame`'s state ended with `ended`."""
+        frame.below = None
+        if frame.held is not None:
+            return  # its state holds another arc (SPEC 17): the callee's end is let go
+        if frame.state.retry_on:
+            self._after_call(frame, ended)
+        else:  # _settle's work, without its call
+            after = self._run(frame, ended)
+            if after is not None:
+                self._pass_up(frame, after)
+
+    def _state_timeout(self, frame: Frame) -> None:
+        """The state's timer fired: its `timeout` arc taken, or held (SPEC 17)."""
+        if frame.state.autonomy and self._timer_held(frame):
+            return
+        self.emit(frame.agent, frame.path(), "timeout", timer="state")
+        self._settle(frame, self._cancelled(frame, "timeout", Event("timeout")))
+
     def _message_arc(self, frame: Frame, state: RState) -> bool:
-        """The earliest message the state maps takes its arc: whether one did."""
+        """The earliest message the state maps takes its arc (or is held): whether one did."""
+        if state.autonomy and self._message_held(frame, state):
+            return True
         message = frame.agent.take_message(state.msg_arcs)
         if message is None:
             return False
