@@ -4,18 +4,15 @@ before anything runs; every problem at its line and column (E360), exit 2."""
 from __future__ import annotations
 
 import json
-import math
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from hfsm.autonomy import ACTIONS, AGENT_ACTIONS, LEVELS, Decision
+from hfsm.autonomy import KEYS, Decision, decision_problems
 from hfsm.errors import Finding, UserError
-from hfsm.names import did_you_mean
 from hfsm.yamlio import Document, decode, read_bytes, read_file
 
 CODE = "E360"
-KEYS = ("t", "agent", "do", "event", "level")
 
 
 def read_decisions(path: Path, agents: Sequence[str]) -> list[Decision]:
@@ -48,56 +45,12 @@ def _decision(item: Any, agents: Sequence[str], bad: Any) -> Decision | None:
     if not isinstance(item, dict):
         bad(None, "an operator record is a mapping {t, agent, do, event, level}")
         return None
-    problems = [*_shape(item), *_fields(item, agents)]
+    problems = decision_problems(item, agents)
     for key, message in problems:
         bad(key, message)
     if problems:
         return None
     return Decision(float(item["t"]), item["do"], item.get("agent"), item.get("event"), item.get("level"))
-
-
-def _shape(item: dict[Any, Any]) -> list[tuple[str, str]]:
-    """Unknown keys, the time and the action, as (key, message)."""
-    out = [
-        (key, f"unknown key '{key}' (an operator record has {', '.join(KEYS)}){did_you_mean(str(key), KEYS)}")
-        for key in item
-        if key not in KEYS
-    ]
-    t = item.get("t")
-    if isinstance(t, bool) or not isinstance(t, int | float) or not math.isfinite(t) or t < 0:
-        out.append(("t", f"t must be a number of seconds >= 0, not {t!r}"))
-    do = item.get("do")
-    if do not in ACTIONS:
-        out.append(
-            ("do", f"do must be one of {', '.join(ACTIONS)}, not {do!r}{did_you_mean(str(do), ACTIONS)}")
-        )
-    return out
-
-
-def _fields(item: dict[Any, Any], agents: Sequence[str]) -> list[tuple[str, str]]:
-    """The agent, event and level each action takes, as (key, message)."""
-    do, agent, event, level = item.get("do"), item.get("agent"), item.get("event"), item.get("level")
-    out = []
-    if do in AGENT_ACTIONS and agent is None:
-        out.append(("do", f"'{do}' needs the agent it answers for (agent: …)"))
-    if agent is not None and agent not in agents:
-        hint = did_you_mean(str(agent), agents) or f" (agents: {', '.join(agents)})"
-        out.append(("agent", f"no agent named {agent!r} in this run{hint}"))
-    if do == "force" and not isinstance(event, str):
-        out.append(("do", "'force' needs the event to take (event: …)"))
-    if event is not None and (do not in AGENT_ACTIONS or not isinstance(event, str)):
-        out.append(("event", "event is given to 'accept' or 'force' only, as a name"))
-    if do == "autonomy" and level not in LEVELS:
-        hint = did_you_mean(str(level), LEVELS)
-        out.append(
-            (
-                "level" if "level" in item else "do",
-                f"'autonomy' needs a level, one of {', '.join(LEVELS)}, not {level!r}{hint}",
-            )
-        )
-    elif do != "autonomy" and level is not None:
-        out.append(("level", "level is given to 'autonomy' only"))
-    return out
 
 
 def _from_trace(path: Path, agents: Sequence[str]) -> list[Decision]:
