@@ -160,7 +160,7 @@ def _read_trace(path: Path) -> list[dict[str, object]]:
     for line, record in enumerate(records, start=1):
         if not _is_record(record):
             raise UsageError(f"--trace {path}:{line}: not a trace record of hfsm-run --trace")
-    return records
+    return [r for r in records if r["agent"] is not None]  # the run's own (its flags, the operator's)
 
 
 def _is_record(record: object) -> bool:
@@ -173,7 +173,7 @@ def _is_record(record: object) -> bool:
         and isinstance(t, int | float)
         and not isinstance(t, bool)
         and isinstance(record.get("kind"), str)
-        and isinstance(record.get("agent"), str)
+        and (isinstance(record.get("agent"), str) or record.get("agent") is None)
     )
 
 

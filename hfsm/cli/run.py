@@ -10,7 +10,7 @@ from pathlib import Path
 
 from hfsm import plugins
 from hfsm.autonomy import LEVELS, Decision, level_of
-from hfsm.cli import guard, report
+from hfsm.cli import guard, report, resume
 from hfsm.cli.fail import check_failures, fail_arg
 from hfsm.cli.history import top_params
 from hfsm.cli.operator_file import read_decisions
@@ -84,17 +84,20 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     for factory in factories.values():
         factory.add_arguments(p.add_argument_group(f"--world {factory.name}"))
     live.add_arguments(p)
+    resume.add_argument(p)
     return p
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     factories = _factories()
     try:
-        args = build_parser(factories).parse_args(argv)
+        parser = build_parser(factories)
+        args = parser.parse_args(argv)
     except SystemExit as exit_:  # a bad flag (2, usage printed) or --help (0): a code, for callers in process
         return exit_.code if isinstance(exit_.code, int) else 2
     logging.basicConfig(level=logging.INFO, format="%(message)s", stream=sys.stderr)
     try:
+        resume.prepare(args, parser, sys.argv[1:] if argv is None else argv)
         with guard.signals_raise():
             return _main(args, factories)
     except (UserError, UsageError) as err:
@@ -138,6 +141,7 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
     )
     report.findings(loaded.warnings)
     top = loaded.roots[0]
+    args.edited = resume.edited(args.resumed, loaded) if args.resumed else []
     if args.check:
         if args.param or args.history:  # the params given are checked too
             top_params(args.param, args.history, top, registry)
@@ -155,6 +159,8 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         agents = _agents(args, world)
         check_failures(args.fail, agents)
         decisions = read_decisions(args.operator, agents) if args.operator else []
+        if args.resumed:  # the trace's decisions up to T, then the script's after it
+            decisions = args.resumed.decisions + [d for d in decisions if d.t > args.resumed.at]
         trace_path = args.trace or world.default_trace
         outputs = [("--trace", trace_path)] if trace_path else []
         outputs += [("--video", Path(p)) for p in getattr(world, "outputs", ())]
@@ -244,11 +250,13 @@ def _run(
                          autonomy=level_of(args.autonomy), decisions=decisions)
     program = Program(loaded.machines, registry, args.dt)
     trace = TraceFile(trace_path) if trace_path else None
-    sink, monitor = live.sinks(args, trace, loaded, registry, loaded.roots[0].name, world)
+    checked = resume.begin(trace, args, loaded, program.dt)
+    sink, monitor = live.sinks(args, checked, loaded, registry, loaded.roots[0].name, world)
     stop = guard.StopFlag()
     try:
         with guard.signals_flag(stop):
             result = run(program, stoppable(world, stop), options, sink)
+        resume.end(checked, result)
     finally:
         if sink:
             sink.close()

@@ -296,7 +296,7 @@ def test_pause_at_zero_stops_before_anything_runs(capsys: pytest.CaptureFixture[
     script = [{"t": 0, "do": "pause"}, {"t": 0, "do": "resume"}]
     ran = run(capsys, tmp_path, "grasp", script=script)
     assert outcome(ran) == ("regrasped", 0.2)
-    assert ran.records[0]["kind"] == "operator"
+    assert [r["kind"] for r in ran.records[:3]] == ["run", "operator", "operator"]
 
 
 def test_a_trace_replays_its_operator_records_byte_for_byte(
