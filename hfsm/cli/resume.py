@@ -31,7 +31,7 @@ from hfsm.yamlio import decode, read_bytes
 
 # What a run writes or how it is watched: never part of what it does.
 OUTPUTS = frozenset({
-    "file", "trace", "json", "quiet", "monitor", "monitor_hold", "realtime", "resume", "operator",
+    "file", "trace", "json", "quiet", "monitor", "monitor_hold", "realtime", "resume", "operator", "max_time",
     "traceback", "check", "strict", "schema", "list", "out", "video", "no_video", "progress",
 })  # fmt: skip
 
