@@ -7,7 +7,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from hfsm.names import did_you_mean
+from hfsm.names import did_you_mean, is_name
 
 LEVELS = ("off", "low", "high", "full")
 FULL = len(LEVELS) - 1
@@ -25,7 +25,7 @@ def join_key(target: str) -> str:
 
 AGENT_ACTIONS = ("accept", "force")
 RUN_ACTIONS = ("autonomy", "pause", "resume", "step")
-ACTIONS = AGENT_ACTIONS + RUN_ACTIONS
+ACTIONS = (*AGENT_ACTIONS, *RUN_ACTIONS, "message")  # message: one to an agent, as if from the radio
 
 
 @dataclass(frozen=True)
@@ -37,9 +37,21 @@ class Decision:
     agent: str | None = None
     event: str | None = None
     level: str | None = None
+    message: str | None = None
+    data: dict[str, Any] | None = None
+    hit: str | None = None  # the breakpoint that paused the run (written `break`)
 
 
-KEYS = ("t", "agent", "do", "event", "level")
+KEYS = ("t", "agent", "do", "event", "level", "message", "data", "break")
+
+
+def decision_of(item: dict[str, Any]) -> Decision:
+    """A checked record (a script's, a trace's, a test's) as a Decision."""
+    get = item.get
+    return Decision(
+        float(item["t"]), item["do"], get("agent"), get("event"), get("level"), get("message"), get("data"),
+        get("break"),
+    )  # fmt: skip
 
 
 def decision_problems(item: dict[Any, Any], agents: Sequence[str]) -> list[tuple[str, str]]:
@@ -88,4 +100,23 @@ def _fields(item: dict[Any, Any], agents: Sequence[str]) -> list[tuple[str, str]
         )
     elif do != "autonomy" and level is not None:
         out.append(("level", "level is given to 'autonomy' only"))
+    return out + _message(item)
+
+
+def _message(item: dict[Any, Any]) -> list[tuple[str, str]]:
+    do, name, data = item.get("do"), item.get("message"), item.get("data")
+    out = []
+    if do == "message":
+        if item.get("agent") is None:
+            out.append(("do", "'message' needs the agent it is sent to (agent: …)"))
+        if not isinstance(name, str) or not is_name(name):
+            out.append(
+                ("message" if "message" in item else "do", f"'message' needs a message name, not {name!r}")
+            )
+        if data is not None and not isinstance(data, dict):
+            out.append(("data", f"data is a mapping, not {data!r}"))
+    else:
+        out += [(key, f"{key} is given to 'message' only") for key in ("message", "data") if key in item]
+    if "break" in item and (do != "pause" or not isinstance(item["break"], str)):
+        out.append(("break", "break names the breakpoint of a 'pause'"))
     return out

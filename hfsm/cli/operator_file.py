@@ -8,7 +8,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from hfsm.autonomy import KEYS, Decision, decision_problems
+from hfsm.autonomy import KEYS, Decision, decision_of, decision_problems
 from hfsm.errors import Finding, UserError
 from hfsm.yamlio import Document, decode, read_bytes, read_file
 
@@ -50,7 +50,7 @@ def _decision(item: Any, agents: Sequence[str], bad: Any) -> Decision | None:
         bad(key, message)
     if problems:
         return None
-    return Decision(float(item["t"]), item["do"], item.get("agent"), item.get("event"), item.get("level"))
+    return decision_of(item)
 
 
 def _from_trace(path: Path, agents: Sequence[str]) -> list[Decision]:

@@ -20,19 +20,19 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from hfsm.autonomy import Decision
+from hfsm.autonomy import Decision, decision_of
+from hfsm.cli.prefix import PrefixCheck
 from hfsm.errors import UsageError
 from hfsm.library import MachineFile
 from hfsm.load import Loaded
 from hfsm.model import CallState, ParallelState
-from hfsm.runtime.core import FatalError
 from hfsm.runtime.program import span_ticks
 from hfsm.yamlio import decode, read_bytes
 
 # What a run writes or how it is watched: never part of what it does.
 OUTPUTS = frozenset({
     "file", "trace", "json", "quiet", "monitor", "monitor_hold", "realtime", "resume", "operator", "max_time",
-    "traceback", "check", "strict", "schema", "list", "out", "video", "no_video", "progress",
+    "breaks", "traceback", "check", "strict", "schema", "list", "out", "video", "no_video", "progress",
 })  # fmt: skip
 
 
@@ -133,7 +133,7 @@ def operator_records(resume: Resume) -> list[Decision]:
         if '"operator"' in line:
             r = json.loads(line)
             if r.get("kind") == "operator":
-                out.append(Decision(r["t"], r["do"], r.get("agent"), r.get("event"), r.get("level")))
+                out.append(decision_of(r))
     return out
 
 
@@ -182,84 +182,6 @@ def _changed(loaded: Loaded, path: tuple[str, ...], do: str) -> str:
             return f"'{path[i]}' calls '{callee}', which is no machine any more"
         i += 1
     return ""
-
-
-class PrefixCheck:
-    """A trace sink over the new trace file: its lines up to T must be the old trace's, byte for byte;
-    the first line after T is preceded by the `resume` record."""
-
-    def __init__(self, file: Any, resume: Resume, edited: list[str], dt: float) -> None:
-        self.file = file
-        self.resume = resume
-        self.edited = edited
-        self.dt = dt
-        self.tick = span_ticks(resume.at, dt)
-        self.seen = 0
-        self.last = 0.0  # the time of the last line checked
-        self.checking = True
-        self.buffer = ""
-        self.failed: str | None = None
-
-    def write(self, record: dict[str, Any]) -> None:
-        self.write_line(json.dumps(record, ensure_ascii=False, allow_nan=False, default=str) + "\n")
-
-    def write_line(self, text: str) -> None:
-        if not self.checking:
-            self.file.write_line(text)
-            return
-        self.buffer += text
-        while "\n" in self.buffer:
-            line, self.buffer = self.buffer.split("\n", 1)
-            self._line(line)
-
-    def _line(self, line: str) -> None:
-        if self.checking:
-            t = json.loads(line).get("t", 0.0)
-            if self.seen == self.resume.prefix:  # the old trace up to T is a prefix of this one
-                self.done(min(t, self.resume.at))
-            elif span_ticks(t, self.dt) > self.tick or self.resume.lines[self.seen] != line:
-                self.checking = False  # said once; what the run writes after is kept as it comes
-                raise FatalError("", self._differs(line))
-            else:
-                self.seen += 1
-                self.last = t
-        self.file.write_line(line + "\n")
-
-    def _differs(self, line: str) -> str:
-        return (
-            f"--resume: the run differs from {self.resume.path} at its line {self.seen + 2}: it wrote\n"
-            f"  {line}\nwhere the trace has\n  {self.resume.lines[self.seen]}\n(a machine file changed "
-            "what happened before T, or the trace was written by another version)"
-        )
-
-    def done(self, t: float) -> None:
-        """Every old line up to T came: the `resume` record, and no more checks."""
-        self.checking = False
-        record = {
-            "t": t,
-            "agent": None,
-            "path": [],
-            "kind": "resume",
-            "trace": str(self.resume.path),
-            "at": self.resume.at,
-            "edited": self.edited,
-        }
-        self.file.write_line(json.dumps(record, ensure_ascii=False) + "\n")
-
-    def flush(self) -> None:
-        self.file.flush()
-
-    def close(self) -> None:
-        self.file.close()
-
-
-def add_argument(p: argparse.ArgumentParser) -> None:
-    p.add_argument(
-        "--resume",
-        metavar="TRACE@T",
-        help="run again what TRACE recorded up to T seconds (its flags, its operator records; checked "
-        "byte for byte), then go on with the machine files as they are now",
-    )
 
 
 def prepare(args: argparse.Namespace, parser: argparse.ArgumentParser, argv: Sequence[str]) -> None:

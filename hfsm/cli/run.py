@@ -9,8 +9,8 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from hfsm import plugins
-from hfsm.autonomy import LEVELS, Decision, level_of
-from hfsm.cli import guard, report, resume
+from hfsm.autonomy import Decision, level_of
+from hfsm.cli import guard, operating, report, resume
 from hfsm.cli.fail import check_failures, fail_arg
 from hfsm.cli.history import top_params
 from hfsm.cli.operator_file import read_decisions
@@ -68,23 +68,10 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
         metavar="AGENT@S",
         help="fail that agent S seconds into the run (repeatable)",
     )
-    p.add_argument(
-        "--autonomy",
-        choices=LEVELS,
-        default="full",
-        help="the run's autonomy level: arcs that need more wait for the operator (default full)",
-    )
-    p.add_argument(
-        "--operator",
-        type=Path,
-        metavar="FILE",
-        help="the operator's decisions: a YAML list of {t, agent, do, event, level}, or a trace "
-        "(.jsonl) whose operator records are replayed",
-    )
+    operating.add_arguments(p)
     for factory in factories.values():
         factory.add_arguments(p.add_argument_group(f"--world {factory.name}"))
     live.add_arguments(p)
-    resume.add_argument(p)
     return p
 
 
@@ -247,7 +234,7 @@ def _run(
     from hfsm.runtime.run import RunOptions, run
 
     options = RunOptions(loaded.roots[0].name, agents, params, args.seed, args.max_time, args.fail,
-                         autonomy=level_of(args.autonomy), decisions=decisions)
+                         autonomy=level_of(args.autonomy), decisions=decisions, breaks=args.breaks)
     program = Program(loaded.machines, registry, args.dt)
     trace = TraceFile(trace_path) if trace_path else None
     checked = resume.begin(trace, args, loaded, program.dt)

@@ -48,6 +48,7 @@ class Core:
         self.wake = False  # vars changed after a state's watches were tried: its next tick is due
         self.level = FULL  # the run's autonomy level (SPEC 17)
         self.approved: Event | None = None  # the event the operator answered: taken, not held again
+        self.breaks: Any = None  # the breakpoints' sink (runtime.breaks.Breaks), when there are any
 
     @property
     def time(self) -> float:

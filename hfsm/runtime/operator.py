@@ -13,7 +13,11 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 from hfsm.autonomy import AGENT_ACTIONS, Decision, level_of
+from hfsm.primitive import Message
+from hfsm.runtime.core import FatalError
 from hfsm.runtime.program import span_ticks
+
+OPERATOR = "operator"  # the sender of a message the operator sends
 
 if TYPE_CHECKING:
     from hfsm.runtime.agent import Frame
@@ -31,6 +35,7 @@ class Operator:
             ((span_ticks(d.t, engine.dt), i, d) for i, d in enumerate(decisions)), key=lambda due: due[:2]
         )
         self.live = live
+        self.pending: list[Decision] = []  # live decisions that came while the run waited for one
         self.paused = False
         self.stepping = False  # paused, but one tick runs
 
@@ -40,8 +45,14 @@ class Operator:
 
     def apply(self, tick: int) -> None:
         """Every decision due by `tick`, in order, then those a live page has sent."""
+        breaks = self.engine.breaks
+        if breaks is not None and breaks.hit is not None:
+            hit, breaks.hit = breaks.hit, None
+            self._act(Decision(0.0, "pause", hit=hit))
         while self.due and self.due[0][0] <= tick:
             self._act(self.due.pop(0)[2])
+        while self.pending:
+            self._act(self.pending.pop(0))
         if self.live is not None:
             while True:
                 try:
@@ -50,6 +61,19 @@ class Operator:
                     break
                 self._act(decision)
 
+    def wait_live(self) -> None:
+        """Nothing else can happen: wait for the live operator's next decision (or a stop signal)."""
+        self.pending.append(self._next_live())
+
+    def _next_live(self) -> Decision:
+        stopping = getattr(self.engine.world, "stopping", None)
+        while True:
+            try:
+                return self.live.get(timeout=0.2)  # type: ignore[union-attr]
+            except queue.Empty:
+                if stopping is not None and stopping():
+                    raise FatalError("", "stopped while waiting for the operator") from None
+
     def hold_on(self, tick: int) -> str:
         """While paused (and not stepping) at `tick`: apply what comes, until the run may go on
         (''), or why it never will (no decision left to resume or step it)."""
@@ -57,7 +81,7 @@ class Operator:
             if self.due and self.due[0][0] <= tick:
                 self._act(self.due.pop(0)[2])
             elif self.live is not None:
-                self._act(self.live.get())
+                self._act(self._next_live())
             else:
                 return f"paused at t={self.engine.time:g} s, and no operator record resumes or steps it"
         return ""
@@ -71,6 +95,8 @@ class Operator:
         engine = self.engine
         record: dict[str, Any] = {"t": engine.time, "agent": decision.agent, "path": [], "kind": "operator"}
         record["do"] = decision.do
+        if decision.hit is not None:
+            record["break"] = decision.hit  # a breakpoint paused the run
         frame, why = self._acts_on(decision, record)
         if why:
             record["ignored"] = why
@@ -84,6 +110,10 @@ class Operator:
         do = decision.do
         if do == "autonomy":
             record["level"] = decision.level
+        if do == "message":
+            record["message"], record["data"] = decision.message, decision.data or {}
+            known = decision.agent in self.engine.by_name
+            return None, "" if known else f"no agent named '{decision.agent}'"
         if do not in AGENT_ACTIONS:
             return None, "the run is not paused" if do == "step" and not self.paused else ""
         record["event"] = decision.event
@@ -104,6 +134,15 @@ class Operator:
             self.stepping = True
         elif do == "autonomy":
             self.engine.set_level(level_of(decision.level or ""))
+        elif do == "message":  # into the mailbox now, as the radio delivers at the start of a tick
+            message = Message(
+                decision.message or "",
+                OPERATOR,
+                decision.agent or "",
+                dict(decision.data or {}),
+                self.engine.tick,
+            )
+            self.engine.deliver([message])
         elif do == "accept":
             self.engine.accept(frame)  # type: ignore[arg-type]
         else:

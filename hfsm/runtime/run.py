@@ -10,6 +10,7 @@ from typing import Any
 
 from hfsm.autonomy import FULL, Decision
 from hfsm.runtime.agent import Agent, AgentResult, BehaviourStats, Frame
+from hfsm.runtime.breaks import Breakpoint, Breaks
 from hfsm.runtime.engine import Engine, FatalError
 from hfsm.runtime.failing import Failure, Failures, all_failed
 from hfsm.runtime.holds import hold_text
@@ -44,6 +45,7 @@ class RunOptions:
     autonomy: int = FULL  # the run's level at the start (SPEC 17)
     decisions: Sequence[Decision] = ()  # the operator's, from a script or a trace
     live: queue.Queue[Decision] | None = None  # the operator's, as a live page sends them
+    breaks: Sequence[Breakpoint] = ()  # records that pause the run (the operator's breakpoints)
 
 
 def run(program: Program, world: World, options: RunOptions, trace: TraceSink | None = None) -> RunResult:
@@ -51,8 +53,10 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
     world.start([a.name for a in agents], program.dt)
     for agent in agents:
         agent.robot = world.handle(agent.name)
-    engine = Engine(agents, world, program.dt, trace)
+    breaks = Breaks(list(options.breaks), trace) if options.breaks else None
+    engine = Engine(agents, world, program.dt, breaks or trace)
     engine.level = options.autonomy
+    engine.breaks = breaks
     try:
         error, tb = _loop(engine, program, options, world)
         if error:
@@ -178,7 +182,8 @@ def _next_tick(engine: Engine, failures: Failures, operator: Operator) -> int | 
         best = max(decided, now + 1)  # the operator may answer what waits
     if best == sys.maxsize:
         if operator.live is not None:
-            return now + 1  # a live operator may still answer: the run waits for it, tick by tick
+            operator.wait_live()  # nothing else can happen: the live operator's answer comes next
+            return now + 1
         return None  # a failure to come is no agent advancing: blocked forever now
     if failures.due:
         best = min(best, failures.due[0][0])

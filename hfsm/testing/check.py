@@ -7,7 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from hfsm import located
-from hfsm.autonomy import Decision, decision_problems
+from hfsm.autonomy import Decision, decision_of, decision_problems
 from hfsm.builtins import BUILTINS
 from hfsm.checks.context import machine_spec
 from hfsm.cli.quiet import stdout_to_stderr
@@ -274,7 +274,7 @@ class _FileChecker:
             for key, message in problems:
                 self.error((*records_at, i, key), "T315", message)
             if not problems:
-                decisions.append(Decision(record.t, record.do, record.agent, record.event, record.level))
+                decisions.append(decision_of(item))
         return decisions
 
 
