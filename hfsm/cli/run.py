@@ -235,10 +235,13 @@ def _run(
 
     options = RunOptions(loaded.roots[0].name, agents, params, args.seed, args.max_time, args.fail,
                          autonomy=level_of(args.autonomy), decisions=decisions, breaks=args.breaks)
+    args.agent_names = agents
     program = Program(loaded.machines, registry, args.dt)
     trace = TraceFile(trace_path) if trace_path else None
     checked = resume.begin(trace, args, loaded, program.dt)
     sink, monitor = live.sinks(args, checked, loaded, registry, loaded.roots[0].name, world)
+    if monitor is not None and monitor.control is not None:
+        options.live = monitor.control.queue
     stop = guard.StopFlag()
     try:
         with guard.signals_flag(stop):

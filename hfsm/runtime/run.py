@@ -45,7 +45,7 @@ class RunOptions:
     autonomy: int = FULL  # the run's level at the start (SPEC 17)
     decisions: Sequence[Decision] = ()  # the operator's, from a script or a trace
     live: queue.Queue[Decision] | None = None  # the operator's, as a live page sends them
-    breaks: Sequence[Breakpoint] = ()  # records that pause the run (the operator's breakpoints)
+    breaks: list[Breakpoint] = field(default_factory=list)  # records that pause the run (shared: a page adds)
 
 
 def run(program: Program, world: World, options: RunOptions, trace: TraceSink | None = None) -> RunResult:
@@ -53,7 +53,7 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
     world.start([a.name for a in agents], program.dt)
     for agent in agents:
         agent.robot = world.handle(agent.name)
-    breaks = Breaks(list(options.breaks), trace) if options.breaks else None
+    breaks = Breaks(options.breaks, trace) if options.breaks or options.live is not None else None
     engine = Engine(agents, world, program.dt, breaks or trace)
     engine.level = options.autonomy
     engine.breaks = breaks
