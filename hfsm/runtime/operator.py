@@ -61,6 +61,11 @@ class Operator:
                     break
                 self._act(decision)
 
+    def hit(self) -> bool:
+        """Whether a breakpoint matched: the next tick pauses the run."""
+        breaks = self.engine.breaks
+        return breaks is not None and breaks.hit is not None
+
     def wait_live(self) -> None:
         """Nothing else can happen: wait for the live operator's next decision (or a stop signal)."""
         self.pending.append(self._next_live())

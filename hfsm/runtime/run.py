@@ -159,7 +159,7 @@ def _world_records(engine: Engine, records: WorldRecords | None, tick: int) -> N
 def _next_tick(engine: Engine, failures: Failures, operator: Operator) -> int | None:
     """In a static world, the next tick in which anything can happen; None when nothing can."""
     now = engine.tick
-    if engine.wake or (engine.team.waiting and engine.team.live()):
+    if engine.wake or (engine.team.waiting and engine.team.live()) or operator.hit():
         engine.wake = False
         return now + 1
     best = engine.world.next_delivery() or sys.maxsize

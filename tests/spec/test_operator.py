@@ -367,3 +367,26 @@ def test_a_bad_operator_file_is_exit_2_at_its_position(
     assert code == 2
     assert message in err
     assert "Traceback" not in err
+
+
+def test_a_breakpoint_pauses_at_the_start_of_the_next_tick(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    script = [{"t": 0.05, "do": "resume"}]
+    ran = run(capsys, tmp_path, "grasp", "--break", "enter:grasp/reach", script=script)
+    assert outcome(ran) == ("regrasped", 0.2)
+    ops = [(r["t"], r["do"], r.get("break")) for r in ran.records if r["kind"] == "operator"]
+    assert ops == [(0.05, "pause", "enter:grasp/reach"), (0.05, "resume", None)]
+
+
+def test_a_bad_breakpoint_is_exit_2(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    ran = run(capsys, tmp_path, "grasp", "--break", "entre:grasp")
+    assert ran.code == 2 and "KIND:PATTERN[@AGENT]" in ran.err
+
+
+def test_the_operator_sends_an_agent_a_message(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    script = [{"t": 0.5, "agent": "a", "do": "message", "message": "stop", "data": {"why": "<b>"}}]
+    ran = run(capsys, tmp_path, "listen", "--agents", "a", script=script)
+    assert outcome(ran) == ("stopped", 0.5)
+    received = next(r for r in ran.records if r["kind"] == "receive")
+    assert (received["t"], received["sender"], received["data"]) == (0.5, "operator", {"why": "<b>"})
