@@ -41,11 +41,10 @@ class Engine(Holds):
             if frame.state_deadline == k:
                 self._state_timeout(frame)
                 return
-            if frame.held is None:
-                if frame.agent.mailbox and state.msg_arcs and self._message_arc(frame, state):
-                    return
-                if state.stepped and self._watched(frame, k):
-                    return
+            if frame.agent.mailbox and state.msg_arcs and self._message_arc(frame, state):
+                return
+            if state.stepped and self._watched(frame, k):
+                return
             below = frame.below
             cls = below.__class__
             if cls is Frame:
@@ -56,20 +55,14 @@ class Engine(Holds):
             elif below is not None and (below.deadline is None or below.deadline <= k):
                 ended = below.advance(k)
                 if ended is not None:
-                    self._ended(frame, ended)
+                    frame.below = None
+                    if state.retry_on:
+                        self._after_call(frame, ended)
+                    else:  # _settle's work, without its call (a held state lets the end go: _held)
+                        ended = self._run(frame, ended)
+                        if ended is not None:
+                            self._pass_up(frame, ended)
             return
-
-    def _ended(self, frame: Frame, ended: Event) -> None:
-        """The behaviour of `frame`'s state ended with `ended`."""
-        frame.below = None
-        if frame.held is not None:
-            return  # its state holds another arc (SPEC 17): the callee's end is let go
-        if frame.state.retry_on:
-            self._after_call(frame, ended)
-        else:  # _settle's work, without its call
-            after = self._run(frame, ended)
-            if after is not None:
-                self._pass_up(frame, after)
 
     def _state_timeout(self, frame: Frame) -> None:
         """The state's timer fired: its `timeout` arc taken, or held (SPEC 17)."""
@@ -79,7 +72,10 @@ class Engine(Holds):
         self._settle(frame, self._cancelled(frame, "timeout", Event("timeout")))
 
     def _message_arc(self, frame: Frame, state: RState) -> bool:
-        """The earliest message the state maps takes its arc (or is held): whether one did."""
+        """The earliest message the state maps takes its arc (or is held): whether one did. A state
+        that holds an arc looks at no message (SPEC 17)."""
+        if frame.held is not None:
+            return False
         if state.autonomy and self._message_held(frame, state):
             return True
         message = frame.agent.take_message(state.msg_arcs)
@@ -90,7 +86,10 @@ class Engine(Holds):
         return True
 
     def _watched(self, frame: Frame, k: int) -> bool:
-        """The state's watches, then the end of a retry's delay: whether either acted."""
+        """The state's watches, then the end of a retry's delay: whether either acted (neither, while
+        the state holds an arc)."""
+        if frame.held is not None:
+            return False
         state = frame.state
         if state.watches:
             event = self._watch(frame, state)
@@ -105,6 +104,8 @@ class Engine(Holds):
         return False
 
     def _after_call(self, frame: Frame, event: Event | None) -> None:
+        if frame.held is not None:
+            return  # its state holds another arc (SPEC 17): the callee's end is let go
         if event is not None and frame.state.retry_on:
             event = self._retry(frame, event)
         if event is not None:

@@ -61,8 +61,8 @@ class Holds(Parallel):
 
     def _held(self, frame: Frame, state: RState, event: Event) -> bool:
         """Whether `event`, about to take its arc from `frame`'s state, is held instead."""
-        if event is HELD:
-            return True
+        if event is HELD or frame.held is not None:
+            return True  # held on entry; or it holds another arc, and this end of its callee is let go
         if event is self.approved or event.message is not None:
             return False  # answered by the operator; or a message, looked at before it was taken
         key = state.join_keys.get(event.name) if event.goto is not None else event.name

@@ -38,6 +38,13 @@ class Operator:
         self.pending: list[Decision] = []  # live decisions that came while the run waited for one
         self.paused = False
         self.stepping = False  # paused, but one tick runs
+        self.busy = True  # whether the run must look at the operator in its next tick
+        self._update()
+
+    def _update(self) -> None:
+        self.busy = bool(self.due or self.pending or self.paused or self.stepping) or (
+            self.live is not None or self.engine.breaks is not None
+        )
 
     def next_due(self) -> int | None:
         """The tick of the next scripted decision (a static world's run does not skip past it)."""
@@ -60,6 +67,7 @@ class Operator:
                 except queue.Empty:
                     break
                 self._act(decision)
+        self._update()
 
     def hit(self) -> bool:
         """Whether a breakpoint matched: the next tick pauses the run."""
@@ -89,6 +97,7 @@ class Operator:
                 self._act(self._next_live())
             else:
                 return f"paused at t={self.engine.time:g} s, and no operator record resumes or steps it"
+        self._update()
         return ""
 
     def ran(self) -> None:

@@ -78,12 +78,9 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
     operator = Operator(engine, options.decisions, options.live)
     world_records = getattr(world, "trace_records", None)  # a world may add records (robots' poses)
     try:
-        paused = _operator_first(operator, 0)
+        paused = _begin(engine, operator, failures, top, options)
         if paused:
             return "blocked forever: " + paused, ""
-        failures.apply(0)
-        _start(engine, top, options)
-        operator.ran()
         while engine.running:
             following = _following(engine, failures, operator)
             if following is None or following > last:
@@ -92,10 +89,8 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
                 world.advance(engine.tick)
                 _world_records(engine, world_records, following)
             engine.tick = following
-            paused = _operator_first(operator, following)
-            if paused:
+            if operator.busy and (paused := _operator_first(operator, following)):
                 return "blocked forever: " + paused + "; " + _where(engine.agents), ""
-            operator.ran()
             if failures.due or not world.static:
                 failures.apply(following)
             arrived = world.collect(following)
@@ -117,12 +112,22 @@ def _following(engine: Engine, failures: Failures, operator: Operator) -> int | 
     paused, the next, whatever is due in it, since a step runs one tick."""
     if operator.paused or not engine.world.static:
         return engine.tick + 1
-    return _next_tick(engine, failures, operator)
+    return _next_tick(engine, failures, operator if operator.busy else None)
+
+
+def _begin(engine: Engine, operator: Operator, failures: Failures, top: RMachine, options: RunOptions) -> str:
+    """Tick 0: the operator's decisions, failures, every agent's start; why it can never go on, or ''."""
+    paused = _operator_first(operator, 0)
+    if not paused:
+        failures.apply(0)
+        _start(engine, top, options)
+    return paused
 
 
 def _operator_first(operator: Operator, tick: int) -> str:
     """The operator's decisions due at the start of `tick`; while paused, those that come until one
     resumes or steps the run. Why the run can never go on, or ''."""
+    operator.ran()
     operator.apply(tick)
     return operator.hold_on(tick) if operator.paused else ""
 
@@ -156,10 +161,11 @@ def _world_records(engine: Engine, records: WorldRecords | None, tick: int) -> N
             engine.records.put(record)
 
 
-def _next_tick(engine: Engine, failures: Failures, operator: Operator) -> int | None:
+def _next_tick(engine: Engine, failures: Failures, operator: Operator | None) -> int | None:
     """In a static world, the next tick in which anything can happen; None when nothing can."""
     now = engine.tick
-    if engine.wake or (engine.team.waiting and engine.team.live()) or operator.hit():
+    hit = operator is not None and operator.hit()
+    if engine.wake or (engine.team.waiting and engine.team.live()) or hit:
         engine.wake = False
         return now + 1
     best = engine.world.next_delivery() or sys.maxsize
@@ -177,11 +183,11 @@ def _next_tick(engine: Engine, failures: Failures, operator: Operator) -> int | 
                     best = deadline
         if best == now + 1:
             break
-    decided = operator.next_due()
+    decided = operator.next_due() if operator is not None else None
     if decided is not None and decided < best:
         best = max(decided, now + 1)  # the operator may answer what waits
     if best == sys.maxsize:
-        if operator.live is not None:
+        if operator is not None and operator.live is not None:
             operator.wait_live()  # nothing else can happen: the live operator's answer comes next
             return now + 1
         return None  # a failure to come is no agent advancing: blocked forever now
