@@ -15,6 +15,7 @@ from hfsm.autonomy import JOIN, LEVELS
 from hfsm.primitive import Message
 from hfsm.runtime.agent import HELD, Agent, Event, Frame, leaves
 from hfsm.runtime.parallel import Parallel
+from hfsm.runtime.scopes import short
 from hfsm.runtime.states import RState
 
 
@@ -88,13 +89,18 @@ class Holds(Parallel):
         """Whether the earliest message the state maps needs a level the run is below: then it is
         kept out of the mailbox, held, and the callee goes on."""
         mailbox = frame.agent.mailbox
+        prefix = frame.radio.prefix  # a message under a scope is held by its qualified name (SPEC 16)
         for i, message in enumerate(mailbox):
-            if message.name in state.msg_arcs:
-                need = state.autonomy.get(message.name)
+            name = message.name
+            if prefix and not name.startswith(prefix):
+                continue
+            bare = name[len(prefix) :]
+            if bare in state.msg_arcs:
+                need = state.autonomy.get(bare)
                 if need is None or self.level >= need:
                     return False
                 del mailbox[i]
-                self._hold(frame, Hold(message.name, need, None, message, i))
+                self._hold(frame, Hold(name, need, None, message, i))
                 return True
         return False
 
@@ -164,7 +170,7 @@ class Holds(Parallel):
             return None if rule is None else rule.target
         if event == "error":
             return state.error_target
-        return state.arcs.get(event) or state.msg_arcs.get(event)
+        return state.arcs.get(event) or state.msg_arcs.get(short(event))
 
     def _take(self, frame: Frame) -> None:
         hold: Hold = frame.held

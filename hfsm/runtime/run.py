@@ -16,6 +16,7 @@ from hfsm.runtime.failing import Failure, Failures, all_failed
 from hfsm.runtime.holds import hold_text
 from hfsm.runtime.operator import Operator
 from hfsm.runtime.program import Program, RMachine, span_ticks
+from hfsm.runtime.scopes import run_under
 from hfsm.trace import TraceSink
 from hfsm.world import World
 
@@ -27,6 +28,8 @@ class RunResult:
     error: str | None = None
     traceback: str = ""
     stats: dict[str, dict[str, BehaviourStats]] = field(default_factory=dict)
+    error_agent: str = ""  # who met the error, and the path of the state where (when known)
+    error_origin: str = ""
 
     @property
     def exit_code(self) -> int:
@@ -46,6 +49,7 @@ class RunOptions:
     decisions: Sequence[Decision] = ()  # the operator's, from a script or a trace
     live: queue.Queue[Decision] | None = None  # the operator's, as a live page sends them
     breaks: list[Breakpoint] = field(default_factory=list)  # records that pause the run (shared: a page adds)
+    scopes: Mapping[str, tuple[str, tuple[str, ...]]] = field(default_factory=dict)  # agent -> scope
 
 
 def run(program: Program, world: World, options: RunOptions, trace: TraceSink | None = None) -> RunResult:
@@ -57,8 +61,10 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
     engine = Engine(agents, world, program.dt, breaks or trace)
     engine.level = options.autonomy
     engine.breaks = breaks
+    if options.scopes:
+        run_under(agents, options.scopes)
     try:
-        error, tb = _loop(engine, program, options, world)
+        error, tb, fatal = _loop(engine, program, options, world)
         if error:
             _stop_all(engine, agents)
     finally:
@@ -67,10 +73,14 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
     if not error and all_failed(agents):
         error = "every agent failed"
     results = {a.name: a.result or AgentResult(None, {}, engine.time) for a in agents}
-    return RunResult(results, engine.time, error, tb, {a.name: a.stats for a in agents})
+    stats = {a.name: a.stats for a in agents}
+    who, origin = (fatal.agent, fatal.origin) if fatal is not None else ("", "")
+    return RunResult(results, engine.time, error, tb, stats, who, origin)
 
 
-def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -> tuple[str | None, str]:
+def _loop(
+    engine: Engine, program: Program, options: RunOptions, world: World
+) -> tuple[str | None, str, FatalError | None]:
     agents = engine.agents
     last = span_ticks(options.max_time, program.dt)
     top = program.machines[options.top]
@@ -80,17 +90,17 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
     try:
         paused = _begin(engine, operator, failures, top, options)
         if paused:
-            return "blocked forever: " + paused, ""
+            return "blocked forever: " + paused, "", None
         while engine.running:
             following = _following(engine, failures, operator)
             if following is None or following > last:
-                return _stopped(engine, following, last, options.max_time), ""
+                return _stopped(engine, following, last, options.max_time), "", None
             if not world.static:
                 world.advance(engine.tick)
                 _world_records(engine, world_records, following)
             engine.tick = following
             if operator.busy and (paused := _operator_first(operator, following)):
-                return "blocked forever: " + paused + "; " + _where(engine.agents), ""
+                return "blocked forever: " + paused + "; " + _where(engine.agents), "", None
             if failures.due or not world.static:
                 failures.apply(following)
             arrived = world.collect(following)
@@ -103,8 +113,8 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
             if engine.records is not None:
                 engine.records.flush()
     except FatalError as exc:
-        return exc.args[0], exc.traceback
-    return None, ""
+        return exc.args[0], exc.traceback, exc
+    return None, "", None
 
 
 def _following(engine: Engine, failures: Failures, operator: Operator) -> int | None:

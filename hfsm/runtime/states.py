@@ -28,7 +28,7 @@ class Callee:
 
 
 class RRegion(Callee):
-    """One region of a parallel state (SPEC 11)."""
+    """One region of a parallel state (docs/REFERENCE.md#parallel-states)."""
 
     __slots__ = ("background", "index", "name")
 
@@ -79,6 +79,7 @@ class RState(Callee):
         "retry_delay",
         "retry_on",
         "retry_times",
+        "scope",
         "stepped",
         "timed",
         "timer",
@@ -108,6 +109,7 @@ class RState(Callee):
         self.stepped = False  # it has watches or a retry: its own level does more in each tick
         self.autonomy: dict[str, int] = {}  # event (or `join:TARGET`) -> the level its arc needs (SPEC 17)
         self.join_keys: dict[str, str] = {}  # a join rule's event name -> its `join:TARGET`
+        self.scope: Any = None  # a `scope:` (SPEC 16): a runtime.scopes.ScopeCode
 
 
 class RMachine:

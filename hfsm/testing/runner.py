@@ -42,6 +42,7 @@ def run_case(plan: CasePlan) -> CaseResult:
         plan.max_time,
         failing,
         plan.agent_params,
+        scopes=plan.scopes,
         autonomy=level_of(plan.autonomy),
         decisions=plan.decisions,
     )
