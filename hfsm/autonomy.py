@@ -1,4 +1,4 @@
-"""Autonomy levels (SPEC 17): `off` < `low` < `high` < `full`, and the keys of a state's `autonomy:`."""
+"""Autonomy levels: `off` < `low` < `high` < `full`, and the keys of a state's `autonomy:`."""
 
 from __future__ import annotations
 

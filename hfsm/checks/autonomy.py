@@ -1,4 +1,4 @@
-"""`autonomy:` on call and parallel states (SPEC 17): each key an event the state maps, each value a level."""
+"""`autonomy:` on call and parallel states: each key an event the state maps, each value a level."""
 
 from __future__ import annotations
 

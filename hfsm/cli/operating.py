@@ -1,4 +1,4 @@
-"""The operator's flags of `hfsm-run` (SPEC 17): the autonomy level, a script or a trace of
+"""The operator's flags of `hfsm-run`: the autonomy level, a script or a trace of
 decisions, breakpoints, and resuming a recorded run."""
 
 from __future__ import annotations

@@ -192,7 +192,7 @@ def _emphasis(emphasis: Emphasis, style: str) -> dict[str, str]:
     return {}
 
 
-# An arc held for the operator below its level (SPEC 17), as FlexBE's editor colours them: the one
+# An arc held for the operator below its level, as FlexBE's editor colours them: the one
 # colour in a monochrome figure, darker for the levels that ask a person more often.
 LEVEL_COLOURS = {"off": "#2b8a3e", "low": "#1864ab", "high": "#c2410c", "full": "#b91c1c"}
 

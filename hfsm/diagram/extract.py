@@ -220,7 +220,7 @@ class Builder:
 
 
 def _level(m: Machine, arc: Arc) -> str:
-    """The autonomy level the arc needs (SPEC 17), or ''."""
+    """The autonomy level the arc needs, or ''."""
     state = m.states.get(arc.source)
     if not isinstance(state, CallState | ParallelState) or not state.autonomy:
         return ""

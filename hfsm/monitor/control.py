@@ -1,4 +1,4 @@
-"""The operator's controls of a live run (SPEC 17): pause, resume, step, answer or force an arc,
+"""The operator's controls of a live run: pause, resume, step, answer or force an arc,
 change the autonomy level, send an agent a message, set a breakpoint.
 
 Each request carries the run's token (printed in the page's address at start) and comes from the

@@ -46,7 +46,7 @@ class Event:
         self.message = message
 
 
-HELD = Event("held")  # a state entered holds an arc at once (SPEC 17): it waits, nothing is taken
+HELD = Event("held")  # a state entered holds an arc at once: it waits, nothing is taken
 
 
 class Activity(Protocol):
@@ -97,7 +97,7 @@ class Frame:
             self.radio = up.inner if isinstance(up, Frame) else up.owner.inner
         self.inner = self.radio
         self.in_with = False  # a state's `with` being read: `scope.*` is the state's own scope
-        self.held: Any = None  # the arc its state holds for the operator (a holds.Hold), SPEC 17
+        self.held: Any = None  # the arc its state holds for the operator (a holds.Hold)
 
     @property
     def scope(self) -> Scope:

@@ -29,7 +29,7 @@ class Arcs(Calls):
             caller: Frame = up  # type: ignore[assignment]
             caller.below = None
             if caller.held is not None:
-                return  # its state holds another arc (SPEC 17): the callee's end is let go
+                return  # its state holds another arc: the callee's end is let go
             if caller.state.retry_on:
                 retried = self._retry(caller, ended)
                 if retried is None:

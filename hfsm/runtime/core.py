@@ -50,7 +50,7 @@ class Core:
         self.spans: dict[float, int] = {}  # seconds -> ticks, for spans seen before
         self.team = Team(self)  # barriers (docs/REFERENCE.md#barriers)
         self.wake = False  # vars changed after a state's watches were tried: its next tick is due
-        self.level = FULL  # the run's autonomy level (SPEC 17)
+        self.level = FULL  # the run's autonomy level
         self.approved: Event | None = None  # the event the operator answered: taken, not held again
         self.breaks: Any = None  # the breakpoints' sink (runtime.breaks.Breaks), when there are any
 

@@ -68,7 +68,7 @@ class Engine(Holds):
             return
 
     def _state_timeout(self, frame: Frame) -> None:
-        """The state's timer fired: its `timeout` arc taken, or held (SPEC 17)."""
+        """The state's timer fired: its `timeout` arc taken, or held."""
         if frame.state.autonomy and self._timer_held(frame):
             return
         self.emit(frame.agent, frame.path(), "timeout", timer="state")
@@ -76,7 +76,7 @@ class Engine(Holds):
 
     def _message_arc(self, frame: Frame, state: RState) -> bool:
         """The earliest message the state maps takes its arc (or is held): whether one did. A state
-        that holds an arc looks at no message (SPEC 17)."""
+        that holds an arc looks at no message."""
         if frame.held is not None:
             return False
         if state.autonomy and self._message_held(frame, state):
@@ -108,7 +108,7 @@ class Engine(Holds):
 
     def _after_call(self, frame: Frame, event: Event | None) -> None:
         if frame.held is not None:
-            return  # its state holds another arc (SPEC 17): the callee's end is let go
+            return  # its state holds another arc: the callee's end is let go
         if event is not None and frame.state.retry_on:
             event = self._retry(frame, event)
         if event is not None:

@@ -1,4 +1,4 @@
-"""Held arcs (SPEC 17): an arc that needs a higher autonomy level than the run's waits for the operator.
+"""Held arcs: an arc that needs a higher autonomy level than the run's waits for the operator.
 
 A state holds at most one arc (`Frame.held`). While it holds, the state looks at none of its own
 other events: its timer, its mapped messages and its watches are not tried, and an end of its callee
@@ -89,7 +89,7 @@ class Holds(Parallel):
         """Whether the earliest message the state maps needs a level the run is below: then it is
         kept out of the mailbox, held, and the callee goes on."""
         mailbox = frame.agent.mailbox
-        prefix = frame.radio.prefix  # a message under a scope is held by its qualified name (SPEC 16)
+        prefix = frame.radio.prefix  # a message under a scope is held by its qualified name
         for i, message in enumerate(mailbox):
             name = message.name
             if prefix and not name.startswith(prefix):

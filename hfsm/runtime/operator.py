@@ -1,4 +1,4 @@
-"""The operator (SPEC 17): its decisions, each at the start of a tick, before anything else of it.
+"""The operator: its decisions, each at the start of a tick, before anything else of it.
 
 A decision comes from a script (`--operator FILE`), a trace's `operator` records, or a live page
 (`Operator.live`, fed from another thread). Each is written to the trace as an `operator` record at

@@ -45,7 +45,7 @@ class RunOptions:
     max_time: float = 3600.0
     failures: Sequence[Failure] = ()
     agent_params: Mapping[str, dict[str, Any]] = field(default_factory=dict)  # an agent's own params
-    autonomy: int = FULL  # the run's level at the start (SPEC 17)
+    autonomy: int = FULL  # the run's level at the start
     decisions: Sequence[Decision] = ()  # the operator's, from a script or a trace
     live: queue.Queue[Decision] | None = None  # the operator's, as a live page sends them
     breaks: list[Breakpoint] = field(default_factory=list)  # records that pause the run (shared: a page adds)

@@ -107,7 +107,7 @@ class RState(Callee):
         self.join: tuple[JoinRule, ...] = ()
         self.plain = False  # a call state without watches or retry: entered the quick way
         self.stepped = False  # it has watches or a retry: its own level does more in each tick
-        self.autonomy: dict[str, int] = {}  # event (or `join:TARGET`) -> the level its arc needs (SPEC 17)
+        self.autonomy: dict[str, int] = {}  # event (or `join:TARGET`) -> the level its arc needs
         self.join_keys: dict[str, str] = {}  # a join rule's event name -> its `join:TARGET`
         self.scope: Any = None  # a `scope:` (SPEC 16): a runtime.scopes.ScopeCode
 

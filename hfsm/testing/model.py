@@ -96,7 +96,7 @@ Level = Literal["off", "low", "high", "full"]
 
 
 class OperatorAt(Strict):
-    """A decision of the operator (SPEC 17), as a record of `hfsm-run --operator FILE`."""
+    """A decision of the operator, as a record of `hfsm-run --operator FILE`."""
 
     t: Seconds = Field(
         description="when it takes effect: at the start of the tick a span of t s from tick 0 ends in"

@@ -1,4 +1,4 @@
-"""An arc that needs an autonomy level (SPEC 17) is coloured and labelled with its level, as FlexBE's
+"""An arc that needs an autonomy level is coloured and labelled with its level, as FlexBE's
 editor shows them; the legend says so."""
 
 from __future__ import annotations

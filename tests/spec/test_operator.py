@@ -1,4 +1,4 @@
-"""SPEC 17 through `hfsm-run --world none --json --trace --operator FILE`: held arcs, the operator's
+"""Operators and autonomy (docs/REFERENCE.md) through `hfsm-run --world none --json --trace --operator FILE`: held arcs, the operator's
 answers, autonomy levels, pause/step/resume, replay of a trace's operator records. The machines are
 in tests/spec/operator/."""
 

@@ -1,5 +1,5 @@
-"""`hfsm-test` cases script the operator (`operator:`, `autonomy:`) and expect held arcs (`held:`),
-SPEC 17; the machines are those of the conformance cases (tests/spec/operator/)."""
+"""`hfsm-test` cases script the operator (`operator:`, `autonomy:`) and expect held arcs (`held:`);
+the machines are those of the conformance cases (tests/spec/operator/)."""
 
 from __future__ import annotations
 
