@@ -39,10 +39,10 @@ def check_autonomy(ctx: CheckContext, mf: MachineFile) -> None:
                     f"autonomy names '{event}', which is not an event of state '{name}' "
                     f"({where}){did_you_mean(event, events)}"
                 )
-                ctx.error(mf, path, "E350", message, key=True)
+                ctx.error(mf, path, "E355", message, key=True)
             if level not in LEVELS:
                 message = (
                     f"autonomy level '{level}' is not one of {', '.join(LEVELS)}"
                     f"{did_you_mean(str(level), LEVELS)}"
                 )
-                ctx.error(mf, path, "E351", message)
+                ctx.error(mf, path, "E356", message)

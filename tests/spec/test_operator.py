@@ -329,12 +329,12 @@ def test_checks_name_a_bad_autonomy_key_and_level(capsys: pytest.CaptureFixture[
     err = capsys.readouterr().err
     assert code == 2
     assert (
-        "bad_autonomy.yaml:6:16: error[E350]: autonomy names 'dnoe', which is not an event of state 'work'"
+        "bad_autonomy.yaml:6:16: error[E355]: autonomy names 'dnoe', which is not an event of state 'work'"
         in err
     )
     assert "did you mean 'done'?" in err
     assert (
-        "bad_autonomy.yaml:6:34: error[E351]: autonomy level 'hihg' is not one of off, low, high, full; did you mean 'high'?"
+        "bad_autonomy.yaml:6:34: error[E356]: autonomy level 'hihg' is not one of off, low, high, full; did you mean 'high'?"
         in err
     )
 
