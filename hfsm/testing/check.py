@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from hfsm import located
+from hfsm.autonomy import Decision, decision_of, decision_problems
 from hfsm.builtins import BUILTINS
 from hfsm.checks.context import machine_spec
 from hfsm.cli.quiet import stdout_to_stderr
@@ -87,6 +88,7 @@ class _FileChecker:
         stand_ins = self._stand_ins(loaded, case, at, set(agents))
         pruned = self._world_free(loaded, top.name, stand_ins, machine_at)
         inputs, messages, fail = self._script(case, at, set(agents))
+        decisions = self._decisions(case, at, list(agents))
         expect = check_expect(self, loaded, stand_ins, case.expect, (*at, "expect"), set(agents))
         if len(self.findings) > before:
             return None
@@ -109,6 +111,8 @@ class _FileChecker:
             messages=messages,
             fail=fail,
             partners=partners,
+            autonomy=self._pick(case, "autonomy", at)[0] or "full",
+            decisions=decisions,
             expect=expect,
             expect_path=(*at, "expect"),
             pruned=pruned,
@@ -270,6 +274,19 @@ class _FileChecker:
             [(m, (*messages_at, i)) for i, m in enumerate(messages or [])],
             list(fail or []),
         )
+
+    def _decisions(self, case: Case, at: Path_, agents: list[str]) -> list[Decision]:
+        """The operator's records, each checked as `--operator` checks them (T315)."""
+        records, records_at = self._pick(case, "operator", at)
+        decisions = []
+        for i, record in enumerate(records or []):
+            item = record.model_dump(exclude_none=True)
+            problems = decision_problems(item, agents)
+            for key, message in problems:
+                self.error((*records_at, i, key), "T315", message)
+            if not problems:
+                decisions.append(decision_of(item))
+        return decisions
 
 
 TEST_SUFFIXES = (".test.yaml", ".test.yml")

@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
+from hfsm.autonomy import Decision
 from hfsm.load import Loaded
 from hfsm.registry import Registry
 from hfsm.spec import BehaviourSpec
@@ -43,6 +44,8 @@ class CasePlan:
     messages: list[tuple[MessageIn, Path_]]
     fail: list[FailAt]
     partners: list[PartnerAt]
+    autonomy: str
+    decisions: list[Decision]
     expect: Expect
     expect_path: Path_
     pruned: set[str] = field(default_factory=set)  # machines not run: only stand-ins call them
