@@ -16,9 +16,13 @@ from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.cli.run import _factories, _named
 from hfsm.errors import Finding, Severity, UsageError, UserError
 from hfsm.load import load
-from hfsm.names import is_name
+from hfsm.library import MachineFile
+from hfsm.names import did_you_mean, is_name
 from hfsm.registry import Registry
 from hfsm.runtime.program import span_ticks
+
+
+SHOWN = 30  # choices listed on stderr
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -29,6 +33,9 @@ def build_parser() -> argparse.ArgumentParser:
     )
     p.add_argument("--agents", default="robot", help="comma-separated agent names (default: robot)")
     p.add_argument("--param", action="append", default=[], metavar="K=V", help="a param of the top machine")
+    p.add_argument(
+        "--agent-param", action="append", default=[], metavar="AGENT:K=V", help="a param for one agent"
+    )
     p.add_argument("--loss", type=_count, default=0, metavar="N", help="messages or notices a run may lose")
     p.add_argument("--delay", type=_count, default=0, metavar="K", help="ticks each may come late")
     p.add_argument("--fail", type=_count, default=0, metavar="N", help="agents that may fail, at any tick")
@@ -36,6 +43,7 @@ def build_parser() -> argparse.ArgumentParser:
         "--bound", type=_seconds, metavar="S", help="run time explored (default: the top timer, else 600)"
     )
     p.add_argument("--max-states", type=_count, default=1_000_000, metavar="N", help="stop after N states")
+    p.add_argument("--max-seconds", type=_seconds, metavar="S", help="stop after S seconds of search")
     p.add_argument("--goal", choices=["success"], help="every agent that does not fail ends in no failure")
     p.add_argument("--props", type=Path, metavar="FILE", help="properties to prove (docs/VERIFY.md)")
     p.add_argument(
@@ -104,8 +112,10 @@ def _main(args: argparse.Namespace) -> int:
     loaded = load([args.file], libs=args.lib, registry=registry)
     report.findings(loaded.warnings)
     top = loaded.roots[0]
-    params = top_params(args.param, None, top, registry)
     agents = _agents(args.agents)
+    agent_params = _agent_params(args, agents, top, registry)
+    every = all(a in agent_params for a in agents)  # then --param alone need not give every param
+    params = agent_params[agents[0]] if every else top_params(args.param, None, top, registry)
     states = {s for mf in loaded.machines.values() for s in mf.model.states}
     props = read_props(args.props, states) if args.props else None
     values = read_values(args.values)
@@ -114,8 +124,9 @@ def _main(args: argparse.Namespace) -> int:
     bound = bound_of(top, args.bound)
     chooser = Chooser()
     program = verify_program(loaded, registry, args.stand_in, values, chooser, args.dt)
-    options = RunOptions(top.name, agents, params, args.seed, bound)
+    options = RunOptions(top.name, agents, params, args.seed, bound, agent_params=agent_params)
     budget = Budget(args.loss, args.delay, args.fail, span_ticks(bound, args.dt), args.max_states)
+    budget.max_seconds = args.max_seconds or budget.max_seconds
     failures = top.model.failure_outcomes
     check = Properties(failures, args.goal == "success", props, bound)
     result = explore(program, options, budget, check, chooser, inputs)
@@ -136,7 +147,7 @@ def _main(args: argparse.Namespace) -> int:
 
         v = result.violation
         setup = {
-            "top": top.name, "agents": agents, "params": params, "seed": args.seed, "dt": args.dt,
+            "top": top.name, "agents": agents, "params": params, "agent_params": agent_params, "seed": args.seed, "dt": args.dt,
             "bound": bound, "stand_ins": args.stand_in, "outputs": values.outputs, "inputs": inputs,
             "loss": args.loss, "delay": args.delay, "fail": args.fail,
             "violation": {"kind": v.kind, "agent": v.agent, "t": round(v.tick * args.dt, 9), "text": v.text},
@@ -173,11 +184,26 @@ def _agents(text: str) -> list[str]:
     return agents
 
 
+def _agent_params(
+    args: argparse.Namespace, agents: list[str], top: MachineFile, registry: Registry
+) -> dict[str, dict[str, Any]]:
+    """`--agent-param AGENT:K=V`: that agent's params are the `--param`s with these over them."""
+    mine: dict[str, list[str]] = {}
+    for text in args.agent_param:
+        agent, sep, pair = text.partition(":")
+        if not sep or agent not in agents:
+            hint = did_you_mean(agent, agents) or f" (agents: {', '.join(agents)})"
+            raise UsageError(f"--agent-param {text!r}: AGENT:K=V with an agent of the run{hint}")
+        mine.setdefault(agent, []).append(pair)
+    return {a: top_params([*args.param, *pairs], None, top, registry) for a, pairs in mine.items()}
+
+
 def _tell(args: argparse.Namespace, out: Path, setup: dict[str, Any]) -> None:
     """The violation, and the choices that led there, on stderr."""
     v = setup["violation"]
     print(f"{args.file}: {v['kind']} ({v['agent']}) at t={v['t']:g} s: {v['text']}", file=sys.stderr)
-    for c in setup["choices"]:
+    choices = setup["choices"]
+    for c in choices[:SHOWN]:
         if c["kind"] == "message":
             how = "lost" if c.get("lost") else f"late by {c['delay']} ticks"
             print(f"  t={c['t']:g} s: {c['what']} {how}", file=sys.stderr)
@@ -188,6 +214,8 @@ def _tell(args: argparse.Namespace, out: Path, setup: dict[str, Any]) -> None:
                 f"  t={c['t']:g} s: {c['what']} ended '{c['outcome']}' after {c['after']} ticks",
                 file=sys.stderr,
             )
+    if len(choices) > SHOWN:
+        print(f"  ... and {len(choices) - SHOWN} more choices (in {out})", file=sys.stderr)
     print(f"wrote {out}", file=sys.stderr)
 
 

@@ -58,6 +58,7 @@ def replay(loaded: Loaded, registry: Registry, setup: dict[str, Any], sink: Trac
         int(setup["seed"]),
         float(setup["bound"]),
         failures,
+        dict(setup.get("agent_params", {})),
     )
     if sink is not None:
         sink.write(schedule_record(setup))

@@ -12,7 +12,8 @@ from hfsm.runtime.builtins import Wait, WaitFor
 from hfsm.runtime.engine import Engine
 from hfsm.verify.props import Props
 from hfsm.verify.standins import StandInActivity
-from hfsm.verify.step import Ended
+from hfsm.runtime.run import _next_tick
+from hfsm.verify.step import NO_FAILURES, Ended
 
 Found = tuple[str, str, str]  # kind, agent(s), text
 
@@ -66,17 +67,20 @@ class Properties:
                     f"{' and '.join(inside)} are in state '{'/'.join(path)}' at once, at t={engine.time:g} s"
                 )
                 return "property", ",".join(inside), text
+        upcoming = _upcoming(engine) if self.props.left_within else None
         for path, seconds in self.props.left_within:
             limit = engine.span(seconds)
             for agent in engine.agents:
                 if agent.result is not None:
                     continue
                 for frame in _frames(agent):
-                    if _in(frame, path) and engine.tick - frame.entered > limit:
+                    # nothing happens before the next tick: an agent in P stays in it until then
+                    if _in(frame, path) and upcoming is not None and upcoming - frame.entered > limit:
                         since = round(frame.entered * dt, 9)
+                        late = round((frame.entered + limit + 1) * dt, 9)
                         text = (
                             f"{agent.name} entered '{'/'.join(path)}' at t={since:g} s and is still in "
-                            f"it at t={engine.time:g} s (limit {seconds:g} s)"
+                            f"it at t={late:g} s (limit {seconds:g} s)"
                         )
                         return "property", agent.name, text
         return None
@@ -98,6 +102,15 @@ class Properties:
             ",".join(names["outputs"]),
             f"at the end (t={engine.time:g} s), '{self.props.at_end}' {why}: outputs {names['outputs']}",
         )
+
+
+def _upcoming(engine: Engine) -> int | None:
+    """The next tick in which something happens (the engine's `wake` left as it was)."""
+    wake = engine.wake
+    try:
+        return _next_tick(engine, NO_FAILURES)
+    finally:
+        engine.wake = wake
 
 
 def _frames(agent: Agent) -> Iterator[Frame]:

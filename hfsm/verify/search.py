@@ -7,6 +7,8 @@ so the first violation found is one of the shortest (fewest ticks in which somet
 
 from __future__ import annotations
 
+import math
+import random
 import time
 from collections import deque
 from collections.abc import Callable, Iterator
@@ -25,6 +27,9 @@ from hfsm.verify.step import Ended, first_state, next_state
 Check = Callable[[Engine, "Ended | None"], "tuple[str, str, str] | None"]
 
 
+_RNG = random.Random(0)
+
+
 @dataclass
 class Budget:
     loss: int = 0
@@ -32,6 +37,7 @@ class Budget:
     fail: int = 0
     last_tick: int = 12000
     max_states: int = 1_000_000
+    max_seconds: float = math.inf
 
 
 @dataclass
@@ -67,9 +73,11 @@ def explore(
     inputs: dict[str, Any],
 ) -> Outcome:
     """Search from tick 0; `program`'s stand-ins must ask `chooser`."""
-    return _Search(program, budget, check, chooser).run(
-        lambda: _first(program, options, chooser, budget, inputs)
-    )
+    search = _Search(program, budget, check, chooser)
+    try:
+        return search.run(lambda: _first(program, options, chooser, budget, inputs))
+    finally:
+        search.snaps.close()
 
 
 class _Search:
@@ -78,7 +86,7 @@ class _Search:
         self.budget = budget
         self.check = check
         self.chooser = chooser
-        self.snaps = Snapshots(shared_objects([program, chooser, program.registry]))
+        self.snaps = Snapshots(shared_objects([program, chooser, program.registry, _RNG]))
         self.result = Outcome()
         self.nodes: list[_Node] = []
         self.seen: set[bytes] = set()
@@ -91,7 +99,7 @@ class _Search:
                 return self.done(False)
         chooser, snaps, last = self.chooser, self.snaps, self.budget.last_tick
         while self.queue:
-            if len(self.seen) >= self.budget.max_states:
+            if len(self.seen) >= self.budget.max_states or self._late():
                 return self.done(False)
             index, data = self.queue.popleft()
             pending: list[tuple[int, ...]] = [()]
@@ -103,6 +111,9 @@ class _Search:
                 if not self.visit(engine, ended, index):
                     return self.done(False)
         return self.done(True)
+
+    def _late(self) -> bool:
+        return time.perf_counter() - self.started > self.budget.max_seconds
 
     def visit(self, engine: Engine, ended: Ended | None, parent: int) -> bool:
         """Record a state reached; False when it violates a property (result.violation set)."""
@@ -143,6 +154,8 @@ def _first(
     made = first_state(program, options, chooser, world)
     if isinstance(made, Ended):
         return Engine([], world, program.dt, None), made
+    for agent in made.agents:
+        agent.rng = _RNG  # no stand-in or built-in draws from it: one for all, shared by every state
     return made, None
 
 

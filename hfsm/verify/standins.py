@@ -1,9 +1,11 @@
 """Stand-ins: a primitive (or a machine named with --stand-in) replaced by a behaviour that may end
 with any of its declared outcomes, after any of the few durations that matter.
 
-Durations that matter are those that order its end against a timer: at once, and one tick before,
-at, and one tick after each timer of any agent that is due later (beyond the first timer above the
-call itself, which cancels it, nothing more can be told apart).
+Durations that matter are those that order its end against a timer: at once (the next tick: a
+stand-in that ended in the tick it began would let a loop of stand-ins spin without time passing,
+which no robot's action does), and one tick before, at, and one tick after each timer of any agent
+that is due later (beyond the first timer above the call itself, which cancels it, nothing more can
+be told apart).
 """
 
 from __future__ import annotations
@@ -74,7 +76,7 @@ def durations(host: Host, agent: Agent, where: Frame | Region) -> list[int]:
     now = host.tick
     own = [d for d in _own_timers(where) if d > now]
     cap = min(own) if own else None
-    ticks = {0}
+    ticks = {1}
     for agents in getattr(host, "agents", ()):
         if agents.root is None or agents.result is not None:
             continue
