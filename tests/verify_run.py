@@ -16,7 +16,9 @@ MACHINES = Path(__file__).parents[1] / "machines"
 EXAMPLES = Path(__file__).parents[1] / "examples"
 
 
-def verify(capsys: pytest.CaptureFixture[str], file: Path, *args: str, out: Path) -> tuple[int, dict[str, Any]]:
+def verify(
+    capsys: pytest.CaptureFixture[str], file: Path, *args: str, out: Path
+) -> tuple[int, dict[str, Any]]:
     code = verify_cli.main([str(file), *args, "--json", "--out", str(out)])
     captured = capsys.readouterr()
     verdict: dict[str, Any] = json.loads(captured.out) if code in (0, 1) else {"stderr": captured.err}
@@ -25,4 +27,6 @@ def verify(capsys: pytest.CaptureFixture[str], file: Path, *args: str, out: Path
 
 
 def replay(file: Path, counterexample: Path, trace: Path) -> int:
-    return run_cli.main([str(file), "--world", "none", "--replay", str(counterexample), "--trace", str(trace), "--quiet"])
+    return run_cli.main(
+        [str(file), "--world", "none", "--replay", str(counterexample), "--trace", str(trace), "--quiet"]
+    )

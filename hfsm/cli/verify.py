@@ -15,12 +15,11 @@ from hfsm.cli.history import top_params
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.cli.run import _factories, _named
 from hfsm.errors import Finding, Severity, UsageError, UserError
-from hfsm.load import load
 from hfsm.library import MachineFile
+from hfsm.load import load
 from hfsm.names import did_you_mean, is_name
 from hfsm.registry import Registry
 from hfsm.runtime.program import span_ticks
-
 
 SHOWN = 30  # choices listed on stderr
 
@@ -147,7 +146,8 @@ def _main(args: argparse.Namespace) -> int:
 
         v = result.violation
         setup = {
-            "top": top.name, "agents": agents, "params": params, "agent_params": agent_params, "seed": args.seed, "dt": args.dt,
+            "top": top.name, "agents": agents, "params": params, "agent_params": agent_params,
+            "seed": args.seed, "dt": args.dt,
             "bound": bound, "stand_ins": args.stand_in, "outputs": values.outputs, "inputs": inputs,
             "loss": args.loss, "delay": args.delay, "fail": args.fail,
             "violation": {"kind": v.kind, "agent": v.agent, "t": round(v.tick * args.dt, 9), "text": v.text},

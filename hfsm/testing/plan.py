@@ -8,7 +8,7 @@ from typing import Any
 from hfsm.load import Loaded
 from hfsm.registry import Registry
 from hfsm.spec import BehaviourSpec
-from hfsm.testing.model import Expect, FailAt, InputsAt, MessageIn, PartnerAt, Step
+from hfsm.testing.model import Expect, FailAt, InputsAt, MessageIn, PartnerAt, Step, VerifyCase
 from hfsm.yamlio import Document, Path_
 
 
@@ -46,6 +46,7 @@ class CasePlan:
     expect: Expect
     expect_path: Path_
     pruned: set[str] = field(default_factory=set)  # machines not run: only stand-ins call them
+    verify: VerifyCase | None = None  # every run the world's choices allow, instead of one
 
     @property
     def line(self) -> int:

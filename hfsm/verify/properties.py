@@ -10,9 +10,9 @@ from hfsm.runtime.agent import Agent, Frame, Region, leaves
 from hfsm.runtime.barrier import Barrier
 from hfsm.runtime.builtins import Wait, WaitFor
 from hfsm.runtime.engine import Engine
+from hfsm.runtime.run import _next_tick
 from hfsm.verify.props import Props
 from hfsm.verify.standins import StandInActivity
-from hfsm.runtime.run import _next_tick
 from hfsm.verify.step import NO_FAILURES, Ended
 
 Found = tuple[str, str, str]  # kind, agent(s), text

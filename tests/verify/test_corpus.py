@@ -32,7 +32,12 @@ CORRECT = [
 
 @pytest.mark.parametrize(("name", "base", "trigger", "kind"), BUGGY, ids=[f"{b[0]}-{b[3]}" for b in BUGGY])
 def test_a_planted_bug_is_found_only_under_its_choice(
-    capsys: pytest.CaptureFixture[str], tmp_path: Path, name: str, base: list[str], trigger: list[str], kind: str
+    capsys: pytest.CaptureFixture[str],
+    tmp_path: Path,
+    name: str,
+    base: list[str],
+    trigger: list[str],
+    kind: str,
 ) -> None:
     file = DATA / f"{name}.yaml"
     code, clean = verify(capsys, file, *base, out=tmp_path / "none.jsonl")
