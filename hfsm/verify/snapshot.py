@@ -82,8 +82,7 @@ class Snapshots:
         pickler.dump(engine)
         return out.getvalue()
 
-    @staticmethod
-    def load(data: bytes) -> Any:
+    def load(self, data: bytes) -> Any:
         return pickle.loads(data)
 
     def close(self) -> None:
