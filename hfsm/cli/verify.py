@@ -12,8 +12,9 @@ from typing import Any
 
 from hfsm.cli import report
 from hfsm.cli.history import top_params
+from hfsm.cli.named import machine_path
 from hfsm.cli.quiet import stdout_to_stderr
-from hfsm.cli.run import _factories, _named
+from hfsm.cli.run import _factories
 from hfsm.errors import Finding, Severity, UsageError, UserError
 from hfsm.library import MachineFile
 from hfsm.load import load
@@ -107,7 +108,7 @@ def _main(args: argparse.Namespace) -> int:
     with stdout_to_stderr():
         registry = Registry.discover()
         factories = _factories()
-    args.file = _named(args.file, args.lib, registry)
+    args.file = machine_path(args.file, args.lib, registry)
     loaded = load([args.file], libs=args.lib, registry=registry)
     report.findings(loaded.warnings)
     top = loaded.roots[0]

@@ -34,8 +34,9 @@ def full_registry() -> Registry:
         return Registry.discover()
 
 
-def read_test_file(path: Path, registry: Registry | None = None) -> list[CasePlan]:
-    doc = read_mapping(shown(path), "a behaviour test")
+def read_test_file(path: Path, registry: Registry | None = None, text: str | None = None) -> list[CasePlan]:
+    """Every case of the file, checked (`text`: the file's text, when not the disk's)."""
+    doc = read_mapping(shown(path), "a behaviour test", text=text)
     model = located.validate(TestFile, doc)
     checker = _FileChecker(path, doc, model, registry or full_registry())
     plans = [checker.case(name, case) for name, case in model.tests.items()]
@@ -115,6 +116,7 @@ class _FileChecker:
             expect_path=(*at, "expect"),
             pruned=pruned,
             verify=case.verify,
+            scopes=self._scopes(case, at),
         )
 
     # --- the machine and its params ------------------------------------------------------------
@@ -242,6 +244,15 @@ class _FileChecker:
                 "add each to `stand_ins:` (tests run without a world)",
             )  # fmt: skip
         return set(models) - run
+
+    def _scopes(self, case: Case, at: Path_) -> dict[str, tuple[str, tuple[str, ...]]]:
+        """Each agent's scope: the first of `scopes` that lists it."""
+        scopes, _ = self._pick(case, "scopes", at)
+        given: dict[str, tuple[str, tuple[str, ...]]] = {}
+        for scope in scopes or []:
+            for agent in scope.agents:
+                given.setdefault(agent, (scope.name, tuple(scope.agents)))
+        return given
 
     # --- scripted inputs and messages ----------------------------------------------------------
 

@@ -7,6 +7,9 @@ from typing import Annotated, Any, Literal
 from pydantic import ConfigDict, Discriminator, Field, StringConstraints, Tag
 
 from hfsm.model import Name, Strict
+from hfsm.names import NAME_PATTERN
+
+ScopeName = Annotated[str, StringConstraints(pattern=rf"^{NAME_PATTERN[1:-1]}(/{NAME_PATTERN[1:-1]})*$")]
 
 Seconds = Annotated[float, Field(ge=0, allow_inf_nan=False)]
 StatePath = Annotated[str, StringConstraints(pattern=r"^[a-z][a-z0-9_]*(/[a-z][a-z0-9_]*)*$")]
@@ -51,17 +54,26 @@ class InputsAt(Strict):
 
 
 class MessageIn(Strict):
-    """A message that enters the mailboxes at time `at`, as if sent by agent `from` (SPEC 6)."""
+    """A message that enters the mailboxes at time `at`, as if sent by agent `from`
+    (docs/REFERENCE.md#messages-between-agents)."""
 
     at: Seconds = 0
     from_: Name = Field(alias="from", description="the sender: any name, in the run or not")
     message: Name
     to: Name | None = Field(default=None, description="absent: every agent of the test but the sender")
     data: dict[str, Any] = Field(default_factory=dict)
+    scope: ScopeName | None = Field(
+        default=None, description="sent under this scope (SPEC 16), qualified: `pair_a` or `room/pair_a`"
+    )
+
+    @property
+    def qualified(self) -> str:
+        return f"{self.scope}/{self.message}" if self.scope else self.message
 
 
 class FailAt(Strict):
-    """An agent that fails at time `at` (SPEC 15): it acts no more, sends nothing, hears nothing."""
+    """An agent that fails at time `at` (docs/REFERENCE.md#agents-that-fail): it acts no more, sends nothing,
+    hears nothing."""
 
     agent: Name
     at: Seconds
@@ -69,11 +81,14 @@ class FailAt(Strict):
 
 
 class PartnerAt(Strict):
-    """A scripted team mate outside the test that arrives at barrier `barrier` at time `at` (SPEC 14):
+    """A scripted team mate outside the test that arrives at barrier `barrier` at time `at`
+    (docs/REFERENCE.md#barriers):
     from then on it sends its notice to every agent of the test, as an agent waiting there does."""
 
     agent: Name = Field(description="its name: not an agent of the test")
-    barrier: str = Field(min_length=1, description="the barrier's name")
+    barrier: str | None = Field(
+        default=None, min_length=1, description="the barrier's name (none: a team mate that never arrives)"
+    )
     at: Seconds = 0
 
 
@@ -87,6 +102,7 @@ Time = Seconds | TimeRange
 
 class Sent(Strict):
     message: Name
+    scope: ScopeName | None = Field(default=None, description="sent under this scope (SPEC 16), qualified")
     to: Name | None = None
     data: dict[str, Any] | None = Field(default=None, description="these fields, with these values")
     at: Time | None = None
@@ -105,7 +121,8 @@ class InOrderSends(Strict):
 
 class AgentExpect(Strict):
     outcome: Name | None = Field(default=None, description="null: the agent did not end")
-    failed: bool | None = Field(default=None, description="whether the agent failed (SPEC 15)")
+    failed: bool | None = Field(
+        default=None, description="whether the agent failed (docs/REFERENCE.md#agents-that-fail)")
     time: Time | None = Field(default=None, description="when its top machine ended (s)")
     outputs: dict[str, Any] | None = Field(default=None, description="these outputs, with these values")
     states: list[StatePath] | InOrderStates | None = Field(
@@ -130,6 +147,14 @@ class Expect(AgentExpect):
     agents: dict[Name, AgentExpect] = Field(default_factory=dict)
 
 
+class ScopeIn(Strict):
+    """A scope the machine under test runs under, for the agents it lists, as if a caller's state
+    had `scope:` (SPEC 16)."""
+
+    name: ScopeName = Field(description="its qualified name: `pair_t1`, or `room/pair_t1` for a nested one")
+    agents: list[Name] = Field(min_length=1, description="its agents; each runs under it, leaving itself out")
+
+
 class Setup(Strict):
     """What a case runs: given in the file for every case, or in a case, which then wins key by key."""
 
@@ -149,6 +174,9 @@ class Setup(Strict):
     fail: list[FailAt] | None = Field(default=None, description="agents that fail, and when")
     partners: list[PartnerAt] | None = Field(
         default=None, description="scripted team mates that arrive at barriers (each entry one round)"
+    )
+    scopes: list[ScopeIn] | None = Field(
+        default=None, description="teams: each agent runs the machine under the scope that lists it"
     )
 
 

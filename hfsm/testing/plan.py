@@ -47,6 +47,7 @@ class CasePlan:
     expect_path: Path_
     pruned: set[str] = field(default_factory=set)  # machines not run: only stand-ins call them
     verify: VerifyCase | None = None  # every run the world's choices allow, instead of one
+    scopes: dict[str, tuple[str, tuple[str, ...]]] = field(default_factory=dict)  # agent -> its scope
 
     @property
     def line(self) -> int:

@@ -20,7 +20,15 @@ def verify_case(plan: CasePlan) -> tuple[list[Mismatch], Outcome]:
     chooser = Chooser()
     program = verify_program(plan.loaded, plan.registry, sorted(plan.stand_ins), Values(), chooser, plan.dt)
     bound = bound_of(top, asked.bound)
-    options = RunOptions(plan.top, plan.agents, plan.params, plan.seed, bound, agent_params=plan.agent_params)
+    options = RunOptions(
+        plan.top,
+        plan.agents,
+        plan.params,
+        plan.seed,
+        bound,
+        agent_params=plan.agent_params,
+        scopes=plan.scopes,
+    )
     budget = Budget(asked.loss, asked.delay, asked.fail, span_ticks(bound, plan.dt), asked.max_states)
     check = Properties(top.model.failure_outcomes, asked.goal == "success", None, bound)
     outcome = explore(program, options, budget, check, chooser, {})

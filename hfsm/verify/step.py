@@ -13,6 +13,7 @@ from hfsm.runtime.engine import Engine, FatalError
 from hfsm.runtime.failing import FAIL_REASON, fail
 from hfsm.runtime.program import Program
 from hfsm.runtime.run import RunOptions, _next_tick, _start
+from hfsm.runtime.scopes import run_under
 from hfsm.verify.choices import Decider
 from hfsm.verify.radio import ChoosingWorld
 
@@ -41,6 +42,8 @@ def first_state(
     agents = [Agent(n, options.top, None, options.seed, world) for n in options.agents]
     world.start([a.name for a in agents], program.dt)
     engine = Engine(agents, world, program.dt, None)
+    if options.scopes:
+        run_under(agents, options.scopes)
     _fail_some(engine, world, decider)
     try:
         _start(engine, program.machines[options.top], options)
