@@ -64,11 +64,32 @@ def verify_program(
         raise UsageError(f"--stand-in {unknown[0]}: no machine of that name is called{hint}")
     if loaded.roots[0].name in stand_ins:
         raise UsageError("--stand-in: the top machine cannot stand in for itself")
-    replaced = Registry(stand_in(p.spec, decider, values.outputs.get(p.spec.name, {})) for p in registry)
+    saved = saved_values(loaded)
+    outputs = {n: {**saved.get(n, {}), **values.outputs.get(n, {})} for n in {*saved, *values.outputs}}
+    replaced = Registry(stand_in(p.spec, decider, outputs.get(p.spec.name, {})) for p in registry)
     for name in stand_ins:
-        replaced.add(stand_in(machine_spec(loaded.machines[name]), decider, values.outputs.get(name, {})))
+        replaced.add(stand_in(machine_spec(loaded.machines[name]), decider, outputs.get(name, {})))
     machines = {n: m for n, m in loaded.machines.items() if n not in stand_ins}
     return Program(machines, replaced, dt)
+
+
+def saved_values(loaded: Loaded) -> dict[str, dict[str, Any]]:
+    """A plain value for each output a machine saves into a var: the var's first value (so that a
+    stand-in's `talking` saved into a list var is a list), by behaviour and output."""
+    found: dict[str, dict[str, Any]] = {}
+    for mf in loaded.machines.values():
+        model = mf.model
+        calls = []
+        for state in model.states.values():
+            calls.append(state)
+            calls.extend((getattr(state, "parallel", None) or {}).values())
+        for call in calls:
+            do, save = getattr(call, "do", None), getattr(call, "save", None)
+            if isinstance(do, str) and isinstance(save, dict):
+                for var, output in save.items():
+                    if var in model.vars:
+                        found.setdefault(do, {}).setdefault(output, model.vars[var])
+    return found
 
 
 def input_values(declared: Mapping[str, Mapping[str, InputSpec]], given: Mapping[str, Any]) -> dict[str, Any]:
