@@ -171,7 +171,9 @@ def _main(args: argparse.Namespace) -> int:
     if args.json:
         print(json.dumps(verdict))
     else:
-        how = "space exhausted" if result.exhausted else f"bound reached ({result.states} states)"
+        how = "space exhausted" if result.exhausted else "stopped before the end"
+        if result.violation is not None:
+            how = "the first violation found ends the search"
         word = {"ok": "ok", "bounded": "no violation", "violation": "VIOLATION"}[verdict["verdict"]]
         rate = verdict["states_per_second"]
         print(f"{word}: {result.states} states in {result.seconds:.1f} s ({rate}/s), {how}", file=sys.stderr)
