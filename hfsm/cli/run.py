@@ -60,6 +60,7 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     p.add_argument("--max-time", type=guard.MAX_TIME, default=3600.0, metavar="S", help="default 3600")
     p.add_argument("--trace", type=Path, metavar="FILE.jsonl", help="write the trace, as the run goes")
     p.add_argument("--json", action="store_true", help="print one JSON object on stdout")
+    p.add_argument("--replay", type=Path, metavar="CE.jsonl", help="run a counterexample of hfsm-verify")
     p.add_argument("--check", action="store_true", help="validate and exit")
     p.add_argument("--strict", action="store_true", help="warnings are errors")
     p.add_argument("--schema", action="store_true", help="print the JSON Schema of machine files")
@@ -139,7 +140,7 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         registry=registry,
         strict=args.strict,
         world=args.world,
-        world_inputs=inputs,
+        world_inputs=None if args.replay else inputs,  # a replay's inputs are its schedule's
     )
     report.findings(loaded.warnings)
     top = loaded.roots[0]
@@ -154,6 +155,10 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
                 check(args)
         print(f"{args.file}: ok ({len(loaded.machines)} machines checked)", file=sys.stderr)
         return 0
+    if args.replay:
+        from hfsm.cli.replay import replayed
+
+        return replayed(args, loaded, registry)
     params = top_params(args.param, args.history, top, registry)
     world = _world(args, loaded, registry, factories)
     started = False

@@ -20,7 +20,7 @@ from hfsm.spec import BehaviourSpec
 from hfsm.testing.calls import callees, reachable
 from hfsm.testing.check_expect import check_expect
 from hfsm.testing.check_team import team_params, team_partners
-from hfsm.testing.model import ByAgent, Case, FailAt, StandIn, Step, TestFile
+from hfsm.testing.model import ByAgent, Case, Expect, FailAt, StandIn, Step, TestFile
 from hfsm.testing.plan import CasePlan, StandInPlan
 from hfsm.yamlio import Document, Path_, read_mapping
 
@@ -89,7 +89,10 @@ class _FileChecker:
         pruned = self._world_free(loaded, top.name, stand_ins, machine_at)
         inputs, messages, fail = self._script(case, at, set(agents))
         decisions = self._decisions(case, at, list(agents))
-        expect = check_expect(self, loaded, stand_ins, case.expect, (*at, "expect"), set(agents))
+        if (case.expect is None) == (case.verify is None):
+            self.error(at, "T330", "a case needs `expect` (one run) or `verify` (every run)", key=True)
+        given = case.expect or Expect()
+        expect = check_expect(self, loaded, stand_ins, given, (*at, "expect"), set(agents))
         if len(self.findings) > before:
             return None
         return CasePlan(
@@ -116,6 +119,7 @@ class _FileChecker:
             expect=expect,
             expect_path=(*at, "expect"),
             pruned=pruned,
+            verify=case.verify,
             scopes=self._scopes(case, at),
         )
 

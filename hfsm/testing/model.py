@@ -207,9 +207,23 @@ class Setup(Strict):
     operator: list[OperatorAt] | None = Field(default=None, description="the operator's decisions")
 
 
+class VerifyCase(Strict):
+    """Every run the world's choices allow (hfsm-verify), instead of one scripted run."""
+
+    loss: Annotated[int, Field(ge=0)] = Field(default=0, description="messages or notices a run may lose")
+    delay: Annotated[int, Field(ge=0)] = Field(default=0, description="ticks each may come late")
+    fail: Annotated[int, Field(ge=0)] = Field(default=0, description="agents that may fail, at any tick")
+    goal: Literal["success"] | None = Field(default=None, description="no agent that lives ends in a failure")
+    bound: Annotated[float, Field(gt=0, allow_inf_nan=False)] | None = Field(
+        default=None, description="run time explored (s); default: the top timer, else 600"
+    )
+    max_states: Annotated[int, Field(gt=0)] = Field(default=200_000, description="not proved past this")
+
+
 class Case(Setup):
     doc: str | None = None
-    expect: Expect
+    expect: Expect | None = Field(default=None, description="what the run does (or give `verify`)")
+    verify: VerifyCase | None = Field(default=None, description="prove the machine instead of one run")
 
 
 class TestFile(Setup):

@@ -9,7 +9,7 @@ from hfsm.autonomy import Decision
 from hfsm.load import Loaded
 from hfsm.registry import Registry
 from hfsm.spec import BehaviourSpec
-from hfsm.testing.model import Expect, FailAt, InputsAt, MessageIn, PartnerAt, Step
+from hfsm.testing.model import Expect, FailAt, InputsAt, MessageIn, PartnerAt, Step, VerifyCase
 from hfsm.yamlio import Document, Path_
 
 
@@ -49,6 +49,7 @@ class CasePlan:
     expect: Expect
     expect_path: Path_
     pruned: set[str] = field(default_factory=set)  # machines not run: only stand-ins call them
+    verify: VerifyCase | None = None  # every run the world's choices allow, instead of one
     scopes: dict[str, tuple[str, tuple[str, ...]]] = field(default_factory=dict)  # agent -> its scope
 
     @property

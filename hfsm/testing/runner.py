@@ -28,6 +28,11 @@ class CaseResult:
 
 
 def run_case(plan: CasePlan) -> CaseResult:
+    if plan.verify is not None:
+        from hfsm.testing.verify_case import verify_case  # the search: loaded only for such cases
+
+        failures, _ = verify_case(plan)
+        return CaseResult(plan, failures, RunResult({}, 0.0), [])
     program, calls = program_for(plan)
     inputs = [entry for entry, _ in plan.inputs]
     messages = [message for message, _ in plan.messages]
