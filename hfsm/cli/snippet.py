@@ -12,13 +12,14 @@ terminal, and never when NO_COLOR is set (https://no-color.org).
 from __future__ import annotations
 
 import os
+import stat
 from collections.abc import Callable
 from pathlib import Path
 from typing import TextIO
 
-from hfsm.errors import Finding, Severity, UserError
+from hfsm.errors import Finding, Severity
 from hfsm.spans import span
-from hfsm.yamlio import read_bytes
+from hfsm.yamlio import MAX_BYTES
 
 _RED, _YELLOW, _BLUE, _BOLD, _RESET = "\x1b[31m", "\x1b[33m", "\x1b[34m", "\x1b[1m", "\x1b[0m"
 TAB = "    "
@@ -39,13 +40,21 @@ def file_lines() -> Source:
 
     def lines(file: str) -> list[str] | None:
         if file not in cache:
-            try:  # a regular file of a readable size only: never blocks on a FIFO or reads 50 MB again
-                cache[file] = read_bytes(Path(file), file).decode("utf-8").splitlines()
-            except (UserError, UnicodeDecodeError):
-                cache[file] = None
+            cache[file] = _read(Path(file))
         return cache[file]
 
     return lines
+
+
+def _read(path: Path) -> list[str] | None:
+    """A regular file's lines, never blocking on a FIFO or a device, nor reading a huge file."""
+    try:
+        info = path.stat()
+        if not stat.S_ISREG(info.st_mode) or info.st_size > MAX_BYTES:
+            return None
+        return path.read_text(encoding="utf-8").splitlines()
+    except (OSError, UnicodeDecodeError):
+        return None
 
 
 def render(finding: Finding, source: list[str] | None, *, colour: bool = False) -> str:
