@@ -234,3 +234,12 @@ async def test_every_suggestion_is_a_quick_fix(client: LanguageClient) -> None:
         for e in a.edit.changes[uri(path)]
     ]
     assert edits == [(3, 8, "wait"), (4, 4, "timer"), (5, 15, "finish")]
+
+
+@pytest.mark.asyncio(loop_scope="module")
+async def test_a_test_file_gets_hfsm_tests_findings(client: LanguageClient) -> None:
+    found = await open_file(client, DATA / "fetch.test.yaml")
+    assert [(d.code, d.range.start.line, d.range.start.character, d.message) for d in found] == [
+        ("T303", 3, 13, "'fetch' has no param 'trys'; did you mean 'tries'?"),
+        ("T321", 4, 22, "'fetch' has no outcome 'gott'; did you mean 'got'?"),
+    ]
