@@ -1,7 +1,8 @@
-"""Finding and loading machine files by name along the search path (SPEC section 10)."""
+"""Finding and loading machine files by name along the search path (docs/REFERENCE.md#hfsm-run)."""
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -9,7 +10,7 @@ from hfsm import located, salvage
 from hfsm.builtins import BUILTINS
 from hfsm.errors import Finding, UserError
 from hfsm.model import Machine, state_calls
-from hfsm.names import did_you_mean
+from hfsm.names import NAME_RULE, did_you_mean, is_name
 from hfsm.registry import Registry
 from hfsm.yamlio import Document, Path_, read_mapping
 
@@ -34,9 +35,20 @@ def shown(path: Path) -> Path:
 
 
 def load_machine_file(path: Path) -> MachineFile:
+    if not is_name(path.stem):
+        raise UserError([Finding(str(shown(path)), 1, 1, "E203", stem_problem(path))])
     doc = read_mapping(shown(path), "a machine")
     model = located.validate(Machine, doc)
     return MachineFile(path.stem, path, doc, model)
+
+
+def stem_problem(path: Path) -> str:
+    """Why a file's stem cannot name a machine, with a name it could have."""
+    better = re.sub(r"[^a-z0-9_]+", "_", path.stem.lower()).strip("_") or "machine"
+    if not better[0].isalpha():
+        better = "m_" + better
+    return (f"the file name '{path.name}' does not make a machine name ({NAME_RULE}): "
+            f"rename it, e.g. '{better}{path.suffix}'")
 
 
 def salvage_machine_file(

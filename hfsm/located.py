@@ -12,6 +12,7 @@ from pydantic_core import ErrorDetails
 from hfsm.errors import Finding, UserError
 from hfsm.expr import reads
 from hfsm.names import NAME_PATTERN, did_you_mean
+from hfsm.spec import shown
 from hfsm.yamlio import Document, Path_
 
 M = TypeVar("M", bound=BaseModel)
@@ -139,7 +140,8 @@ def _message(model: type[BaseModel], path: Path_, err: ErrorDetails) -> str:
     if kind == "extra_forbidden":
         allowed = _allowed_keys(model, err["loc"][:-1])
         if last in _CALL_ONLY and "parallel-state" in err["loc"]:
-            return f"a parallel state has no {where}: its regions call behaviours (SPEC 11)"
+            return (f"a parallel state has no {where}: its regions call behaviours "
+                    "(docs/REFERENCE.md#parallel-states)")
         hint = did_you_mean(str(last), _keys_near(model, err["loc"]))
         return f"unknown key {where}" + (hint or f" (allowed: {', '.join(allowed)})")
     if kind == "missing":
@@ -246,7 +248,7 @@ def _describe(value: Any) -> str:
         return "a mapping"
     if isinstance(value, list):
         return "a list"
-    return repr(value)
+    return shown(value)
 
 
 def _allowed_keys(model: type[BaseModel], loc: tuple[int | str, ...]) -> list[str]:

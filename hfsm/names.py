@@ -8,6 +8,7 @@ from collections.abc import Iterable
 
 NAME_PATTERN = r"^[a-z][a-z0-9_]*$"
 NAME_RE = re.compile(NAME_PATTERN)
+NAME_RULE = "a lowercase letter, then lowercase letters, digits and '_'"
 RESERVED_OUTCOMES = frozenset({"error"})
 RESERVED_MESSAGES = frozenset({"timeout", "error"})
 

@@ -71,7 +71,7 @@ class Context(Protocol):
     def time(self) -> float: ...
 
     def wait(self, seconds: float | None = None) -> None:
-        """Block for a span of seconds (per SPEC 5), or one tick when None."""
+        """Block for a span of seconds (per docs/REFERENCE.md#time-and-timers), or one tick when None."""
 
     def wait_until(self, ready: Callable[[], bool], timeout: float = math.inf) -> bool:
         """Block tick by tick until `ready()` is true (True) or the timeout passes (False)."""

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import gc
 import os
+import re
 import stat
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -57,6 +58,7 @@ class Document:
     data: Any
     keys: dict[Path_, Pos] = field(default_factory=dict)
     values: dict[Path_, Pos] = field(default_factory=dict)
+    text: str = field(default="", repr=False)  # as read: to place a finding inside a string
 
     def pos(self, path: Path_, *, key: bool = False) -> Pos:
         """Position of the value (or key) at `path`, else of its nearest located ancestor."""
@@ -103,13 +105,18 @@ def parse_text(text: str, file: str, *, kept: list[Finding] | None = None) -> Do
     are added to it instead, and the document is returned as it was built around them."""
     doc = Document(file, None)
     builder = EventBuilder(file)
-    parser = _Parser(text)
+    cut = _flow_cut(text)
+    parser = _Parser(text[:cut])
     try:
         with collector_paused():
             _drive(parser, builder, file)
+        if cut < len(text):
+            raise TooBig(_line_col(text, cut - 1), f"collections nested more than {MAX_DEPTH} deep")
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         deep = _too_deep(text, builder.block_depth(), mark.index if mark else len(text))
+        if deep is None and cut < len(text):
+            deep = _line_col(text, cut - 1)
         if deep is not None:
             message = f"collections nested more than {MAX_DEPTH} deep"
             raise UserError([Finding(file, *deep, "E106", message)]) from None
@@ -140,34 +147,46 @@ def parse_text(text: str, file: str, *, kept: list[Finding] | None = None) -> Do
         raise UserError(built.errors)
     if kept is not None:
         kept.extend(built.errors)
-    doc.data, doc.keys, doc.values = built.data, built.keys, built.values
+    doc.data, doc.keys, doc.values, doc.text = built.data, built.keys, built.values, text
     return doc
+
+
+_FLOW = re.compile(
+    r"(?<![^\s\[{,:])'(?:[^']|'')*'"  # a single-quoted string
+    r'|(?<![^\s\[{,:])"(?:\\.|[^"\\])*"'  # a double-quoted one
+    r"|(?<!\S)#[^\n]*|[\[\]{}]"  # a comment, or a bracket
+)
 
 
 def _too_deep(text: str, blocks: int, end: int) -> Pos | None:
     """Where brackets nest past MAX_DEPTH (with `blocks` indented collections around them) before
     `end`: the parser's own nesting limit may be met first, but ours is the one reported."""
-    depth, quote, i = 0, "", 0
-    while i < min(end + 1, len(text)):
-        char = text[i]
-        if quote:
-            if char == "\\" and quote == '"':
-                i += 1
-            elif char == quote:
-                quote = ""
-        elif char in "[{":
+    index = _deep_bracket(text, MAX_DEPTH - blocks, end)
+    return None if index is None else _line_col(text, index)
+
+
+def _deep_bracket(text: str, limit: int, end: int) -> int | None:
+    """The index of the first bracket that opens more than `limit` levels of brackets, before `end`
+    (quoted strings and comments skipped)."""
+    depth = 0
+    for match in _FLOW.finditer(text, 0, min(end + 1, len(text))):
+        char = match.group()
+        if char in "[{":
             depth += 1
-            if blocks + depth > MAX_DEPTH:
-                return _line_col(text, i)
+            if depth > limit:
+                return match.start()
         elif char in "]}":
             depth = max(0, depth - 1)
-        elif char in "'\"" and (i == 0 or text[i - 1] in " \t\n[{,:"):
-            quote = char
-        elif char == "#" and (i == 0 or text[i - 1] in " \t\n"):
-            newline = text.find("\n", i)
-            i = len(text) if newline < 0 else newline
-        i += 1
     return None
+
+
+def _flow_cut(text: str) -> int:
+    """How much of `text` the parser is given: all of it, unless brackets alone nest past MAX_DEPTH;
+    then up to that bracket, so that our limit meets it before any limit of the parser's own."""
+    if text.count("[") + text.count("{") <= MAX_DEPTH:
+        return len(text)
+    index = _deep_bracket(text, MAX_DEPTH, len(text))
+    return len(text) if index is None else index + 1
 
 
 def _line_col(text: str, index: int) -> Pos:

@@ -29,7 +29,8 @@ def shorten(text: str, width: int) -> str:
 
 
 def number(value: float) -> str:
-    """The fewest digits that read back the same; a whole float without `.0` (SPEC 7)."""
+    """The fewest digits that read back the same; a whole float without `.0`
+    (docs/REFERENCE.md#expressions)."""
     if isinstance(value, int):
         return str(value)
     if not math.isfinite(value):

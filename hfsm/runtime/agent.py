@@ -65,7 +65,7 @@ class Frame:
     )  # fmt: skip
     entered: int  # the tick its current state was entered (set on entering it, as the two below)
     state_deadline: int | None
-    attempt: int  # the call of that state's behaviour, from 1 (SPEC 13)
+    attempt: int  # the call of that state's behaviour, from 1 (docs/REFERENCE.md#retries)
 
     def __init__(
         self, machine: RMachine, params: dict[str, Any], agent: Agent, up: Frame | Region | None
@@ -151,7 +151,7 @@ class AgentResult:
     outcome: str | None
     outputs: dict[str, Any]
     time: float
-    failed: str | None = None  # the reason, when the agent failed (SPEC 15)
+    failed: str | None = None  # the reason, when the agent failed (docs/REFERENCE.md#agents-that-fail)
 
 
 class _NoClock:

@@ -141,7 +141,8 @@ class Arcs(Calls):
     def _watch(self, frame: Frame, state: RState) -> Event | None:
         """The first watch that holds, as the event that takes its arc (None: none holds).
 
-        A watch back to this state is passed over (SPEC 12): the state stays, and the watches after
+        A watch back to this state is passed over (docs/REFERENCE.md#watches): the state stays, and the
+        watches after
         it are tried, so a machine's watch into a state does not silence that state's own."""
         for watch in state.watches:
             try:

@@ -44,7 +44,7 @@ class Core:
         self._time = (0, 0.0)  # (tick, seconds) of the last time asked for
         self.running = len(agents)  # agents whose top machine has not ended
         self.spans: dict[float, int] = {}  # seconds -> ticks, for spans seen before
-        self.team = Team(self)  # barriers (SPEC 14)
+        self.team = Team(self)  # barriers (docs/REFERENCE.md#barriers)
         self.wake = False  # vars changed after a state's watches were tried: its next tick is due
 
     @property

@@ -28,7 +28,7 @@ class Callee:
 
 
 class RRegion(Callee):
-    """One region of a parallel state (SPEC 11)."""
+    """One region of a parallel state (docs/REFERENCE.md#parallel-states)."""
 
     __slots__ = ("background", "index", "name")
 

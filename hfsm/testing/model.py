@@ -51,7 +51,8 @@ class InputsAt(Strict):
 
 
 class MessageIn(Strict):
-    """A message that enters the mailboxes at time `at`, as if sent by agent `from` (SPEC 6)."""
+    """A message that enters the mailboxes at time `at`, as if sent by agent `from`
+    (docs/REFERENCE.md#messages-between-agents)."""
 
     at: Seconds = 0
     from_: Name = Field(alias="from", description="the sender: any name, in the run or not")
@@ -61,7 +62,8 @@ class MessageIn(Strict):
 
 
 class FailAt(Strict):
-    """An agent that fails at time `at` (SPEC 15): it acts no more, sends nothing, hears nothing."""
+    """An agent that fails at time `at` (docs/REFERENCE.md#agents-that-fail): it acts no more, sends nothing,
+    hears nothing."""
 
     agent: Name
     at: Seconds
@@ -69,7 +71,8 @@ class FailAt(Strict):
 
 
 class PartnerAt(Strict):
-    """A scripted team mate outside the test that arrives at barrier `barrier` at time `at` (SPEC 14):
+    """A scripted team mate outside the test that arrives at barrier `barrier` at time `at`
+    (docs/REFERENCE.md#barriers):
     from then on it sends its notice to every agent of the test, as an agent waiting there does."""
 
     agent: Name = Field(description="its name: not an agent of the test")
@@ -105,7 +108,8 @@ class InOrderSends(Strict):
 
 class AgentExpect(Strict):
     outcome: Name | None = Field(default=None, description="null: the agent did not end")
-    failed: bool | None = Field(default=None, description="whether the agent failed (SPEC 15)")
+    failed: bool | None = Field(
+        default=None, description="whether the agent failed (docs/REFERENCE.md#agents-that-fail)")
     time: Time | None = Field(default=None, description="when its top machine ended (s)")
     outputs: dict[str, Any] | None = Field(default=None, description="these outputs, with these values")
     states: list[StatePath] | InOrderStates | None = Field(
