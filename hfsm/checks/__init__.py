@@ -14,6 +14,7 @@ from hfsm.checks.expressions import check_expressions, check_param_defaults
 from hfsm.checks.forgotten import check_forgotten_wraps
 from hfsm.checks.graphs import check_recursion, check_state_graph
 from hfsm.checks.parallel import check_parallel
+from hfsm.checks.scopes import check_scopes
 from hfsm.checks.structure import (
     check_any,
     check_choice_else,
@@ -44,6 +45,7 @@ MACHINE_CHECKS: tuple[MachineCheck, ...] = (
     check_state_graph,
     check_regions,
     check_forgotten_wraps,
+    check_scopes,
 )
 
 

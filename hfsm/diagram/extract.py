@@ -103,6 +103,8 @@ class Builder:
         if isinstance(st, ChoiceState):
             return Node(node_id(ref), "choice", s, ref=ref, tooltip=st.doc or "")
         timer = (f"timer {text.timer(st.timer, m.params)}",) if st.timer is not None else ()
+        if st.scope is not None:
+            timer = (text.scope(st.scope.name), *timer)
         if isinstance(st, ParallelState):
             if inner is not None:
                 return regions.cluster(self, st, ref, inner, timer)

@@ -46,6 +46,12 @@ _NODES: tuple[tuple[Node, str], ...] = (
         Node("timed", "builtin", "state", ('wait_for(message="go")', "timer 5 s")),
         "a state with its own timer: the duration in its label, its 'timeout' arc dashed",
     ),
+    (
+        Node("scoped", "machine", "state", ("machine()", "scope: pair_\u2026")),
+        "a state whose behaviour runs under a scope, a team within the team: its messages and "
+        "barriers are private to the scope's agents (a literal name is shown whole; one given by an "
+        "expression by the text it starts with)",
+    ),
     (Node("start", "start", "start"), "marks the initial state: the arc from it points there"),
     (
         Node("timer", "timer", "", xlabel="60 s"),

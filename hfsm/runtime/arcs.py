@@ -6,6 +6,7 @@ from hfsm.expr import ExprValueError
 from hfsm.runtime.agent import Event, Frame, Region
 from hfsm.runtime.calls import Calls
 from hfsm.runtime.core import MAX_ENTRIES, FatalError
+from hfsm.runtime.scopes import open_scope, short
 from hfsm.runtime.states import RState
 
 
@@ -76,7 +77,7 @@ class Arcs(Calls):
         if event.goto is not None:
             return event.goto
         if event.message is not None and event.name != "error":
-            return state.msg_arcs[event.name]
+            return state.msg_arcs[short(event.name)]
         if not event.origin:
             event.origin = "/".join(frame.path())
             self.emit(frame.agent, frame.path(), "error", message=event.error)
@@ -88,7 +89,8 @@ class Arcs(Calls):
         frame.entered = self.tick
         frame.state_deadline = None
         frame.attempt = 1
-        bad_timer = None if state.timer is None else self._start_timer(frame, state)
+        frame.inner = frame.radio
+        bad_timer = None if state.timer is None and state.scope is None else self._start_timer(frame, state)
         if self.records is not None:
             self.records.enter(frame, state)
         agent.entries += 1
@@ -102,7 +104,7 @@ class Arcs(Calls):
         if bad_timer is not None:
             return bad_timer
         if agent.mailbox and state.msg_arcs:
-            message = agent.take_message(state.msg_arcs)
+            message = agent.take_message(state.msg_arcs, frame.radio.prefix)
             if message is not None:
                 return Event(message.name, message=message)
         if state.plain:
@@ -119,12 +121,19 @@ class Arcs(Calls):
         return event
 
     def _start_timer(self, frame: Frame, state: RState) -> Event | None:
-        """The state's timer set (before its `enter` is written, which shows when it fires); or the
-        error its expression gave, taken once the state is entered."""
-        ticks = self._ticks(state.timer, frame)
-        if ticks.__class__ is Event:
-            return ticks
-        frame.state_deadline = self.tick + ticks  # type: ignore[operator]
+        """The state's timer set (before its `enter` is written, which shows when it fires), then its
+        `scope:` read (SPEC 16: what it runs is under it until the state is left); or the error
+        either gave, taken once the state is entered."""
+        if state.timer is not None:
+            ticks = self._ticks(state.timer, frame)
+            if ticks.__class__ is Event:
+                return ticks
+            frame.state_deadline = self.tick + ticks  # type: ignore[operator]
+        if state.scope is not None:
+            radio = open_scope(state.scope, frame.scope, frame.agent.name, frame.radio, self.team.order)
+            if isinstance(radio, str):
+                return Event("error", error=radio)
+            frame.inner = radio
         return None
 
     def _choose(self, frame: Frame, state: RState) -> Event:

@@ -32,10 +32,13 @@ class Calls(Cancelling):
         return float(seconds)
 
     def _params(self, callee: Callee, frame: Frame) -> dict[str, Any] | Event:
+        frame.in_with = True  # `scope.*` in a `with` reads the state's own scope (SPEC 16)
         try:
             given = {k: v.fn(frame.scope) for k, v in callee.with_.items()}
         except ExprValueError as exc:
             return Event("error", error=str(exc))
+        finally:
+            frame.in_with = False
         params = resolve_params(callee.spec, given)  # type: ignore[arg-type]
         return Event("error", error=params) if isinstance(params, str) else params
 

@@ -13,6 +13,7 @@ from hfsm.runtime.agent import Agent, AgentResult, Event, Frame, Region
 from hfsm.runtime.barrier import Team
 from hfsm.runtime.program import span_ticks
 from hfsm.runtime.records import records_for
+from hfsm.runtime.scopes import Radio
 from hfsm.runtime.states import RState
 from hfsm.trace import TraceSink
 from hfsm.world import World
@@ -36,6 +37,8 @@ class Core:
         for agent in agents:
             agent.clock = self
         self.by_name = {a.name: a for a in agents}
+        for agent in agents:
+            agent.radio = Radio("", tuple(a.name for a in agents if a is not agent), top=True)
         self.world: World = world
         self.dt = dt
         self.trace = trace

@@ -16,6 +16,8 @@ from hfsm.runtime.agent import Agent, Event, Frame, Region, leaves
 from hfsm.runtime.core import FatalError
 from hfsm.runtime.parallel import Parallel
 from hfsm.runtime.program import RMachine
+from hfsm.runtime.scopes import radio_at
+from hfsm.runtime.scopes import targets as scoped_targets
 from hfsm.runtime.states import RState
 from hfsm.world import NOTICE
 
@@ -68,7 +70,7 @@ class Engine(Parallel):
 
     def _message_arc(self, frame: Frame, state: RState) -> bool:
         """The earliest message the state maps takes its arc: whether one did."""
-        message = frame.agent.take_message(state.msg_arcs)
+        message = frame.agent.take_message(state.msg_arcs, frame.radio.prefix)
         if message is None:
             return False
         event = Event(message.name, message=message)
@@ -108,8 +110,15 @@ class Engine(Parallel):
     # --- messages ------------------------------------------------------------------------------
 
     def send(self, agent: Agent, where: Frame | Region, name: str, to: str, data: dict[str, Any]) -> str:
-        """Post a message; return a problem as text, or ''."""
-        if to == "others":
+        """Post a message, its name qualified by the scope it is sent under; a problem as text, or ''."""
+        radio = radio_at(where)
+        if not radio.top:
+            chosen = scoped_targets(radio, agent.name, to)
+            if isinstance(chosen, str):
+                return chosen
+            targets = chosen
+            name = radio.prefix + name
+        elif to == "others":
             targets = [a.name for a in self.agents if a is not agent]
         elif to == "all":
             targets = [a.name for a in self.agents]

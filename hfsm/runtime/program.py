@@ -13,6 +13,7 @@ from hfsm.library import MachineFile
 from hfsm.model import CallState, ChoiceState, IfBranch, JoinRule, Machine, ParallelState, Region, Retry
 from hfsm.model import Watch as WatchModel
 from hfsm.registry import Registry
+from hfsm.runtime.scopes import ScopeCode
 from hfsm.runtime.states import Callee, RMachine, RRegion, RState, Watch
 from hfsm.runtime.states import JoinRule as RJoin
 from hfsm.spec import BehaviourSpec, coerce, is_finite_number, shown, type_ok
@@ -104,6 +105,10 @@ class Program:
             self._arcs(rs, state.on, target, any_msgs, receives)
             rs.timer = self._timer(state.timer, names)
             self._watches(rs, [*m.watch, *state.watch], names, target)
+            if state.scope is not None:
+                rs.scope = ScopeCode(
+                    compile_value(state.scope.name, names), compile_value(state.scope.agents, names)
+                )
             if isinstance(state, CallState):
                 self._callee(rs, state, names)
                 rs.save = tuple(state.save.items())

@@ -11,6 +11,7 @@ from hfsm.runtime.agent import Agent, AgentResult, BehaviourStats, Frame
 from hfsm.runtime.engine import Engine, FatalError
 from hfsm.runtime.failing import Failure, Failures, all_failed
 from hfsm.runtime.program import Program, RMachine, span_ticks
+from hfsm.runtime.scopes import run_under
 from hfsm.trace import TraceSink
 from hfsm.world import World
 
@@ -39,6 +40,7 @@ class RunOptions:
     max_time: float = 3600.0
     failures: Sequence[Failure] = ()
     agent_params: Mapping[str, dict[str, Any]] = field(default_factory=dict)  # an agent's own params
+    scopes: Mapping[str, tuple[str, tuple[str, ...]]] = field(default_factory=dict)  # agent -> scope
 
 
 def run(program: Program, world: World, options: RunOptions, trace: TraceSink | None = None) -> RunResult:
@@ -47,6 +49,8 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
     for agent in agents:
         agent.robot = world.handle(agent.name)
     engine = Engine(agents, world, program.dt, trace)
+    if options.scopes:
+        run_under(agents, options.scopes)
     try:
         error, tb, fatal = _loop(engine, program, options, world)
         if error:

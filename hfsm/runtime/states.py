@@ -77,6 +77,7 @@ class RState(Callee):
         "retry_delay",
         "retry_on",
         "retry_times",
+        "scope",
         "stepped",
         "timed",
         "timer",
@@ -104,6 +105,7 @@ class RState(Callee):
         self.join: tuple[JoinRule, ...] = ()
         self.plain = False  # a call state without watches or retry: entered the quick way
         self.stepped = False  # it has watches or a retry: its own level does more in each tick
+        self.scope: Any = None  # a `scope:` (SPEC 16): a runtime.scopes.ScopeCode
 
 
 class RMachine:

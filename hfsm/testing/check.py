@@ -112,6 +112,7 @@ class _FileChecker:
             expect=expect,
             expect_path=(*at, "expect"),
             pruned=pruned,
+            scopes=self._scopes(case, at),
         )
 
     # --- the machine and its params ------------------------------------------------------------
@@ -239,6 +240,15 @@ class _FileChecker:
                 "add each to `stand_ins:` (tests run without a world)",
             )  # fmt: skip
         return set(models) - run
+
+    def _scopes(self, case: Case, at: Path_) -> dict[str, tuple[str, tuple[str, ...]]]:
+        """Each agent's scope: the first of `scopes` that lists it."""
+        scopes, _ = self._pick(case, "scopes", at)
+        given: dict[str, tuple[str, tuple[str, ...]]] = {}
+        for scope in scopes or []:
+            for agent in scope.agents:
+                given.setdefault(agent, (scope.name, tuple(scope.agents)))
+        return given
 
     # --- scripted inputs and messages ----------------------------------------------------------
 

@@ -244,7 +244,8 @@ def _list(items: list[str]) -> str:
 def _sent_matches(expected: str | Sent, record: dict[str, Any]) -> bool:
     if isinstance(expected, str):
         return bool(record["message"] == expected)
-    if record["message"] != expected.message or (expected.to is not None and record["to"] != expected.to):
+    qualified = f"{expected.scope}/{expected.message}" if expected.scope else expected.message
+    if record["message"] != qualified or (expected.to is not None and record["to"] != expected.to):
         return False
     data = record.get("data") or {}
     if expected.data is not None and any(
@@ -262,7 +263,7 @@ def _sent_text(record: dict[str, Any]) -> str:
 def _expected_text(item: str | Sent) -> str:
     if isinstance(item, str):
         return item
-    parts = [item.message]
+    parts = [f"{item.scope}/{item.message}" if item.scope else item.message]
     if item.to is not None:
         parts.append(f"to {item.to}")
     if item.data is not None:

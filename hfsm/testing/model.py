@@ -7,6 +7,9 @@ from typing import Annotated, Any
 from pydantic import ConfigDict, Discriminator, Field, StringConstraints, Tag
 
 from hfsm.model import Name, Strict
+from hfsm.names import NAME_PATTERN
+
+ScopeName = Annotated[str, StringConstraints(pattern=rf"^{NAME_PATTERN[1:-1]}(/{NAME_PATTERN[1:-1]})*$")]
 
 Seconds = Annotated[float, Field(ge=0, allow_inf_nan=False)]
 StatePath = Annotated[str, StringConstraints(pattern=r"^[a-z][a-z0-9_]*(/[a-z][a-z0-9_]*)*$")]
@@ -59,6 +62,13 @@ class MessageIn(Strict):
     message: Name
     to: Name | None = Field(default=None, description="absent: every agent of the test but the sender")
     data: dict[str, Any] = Field(default_factory=dict)
+    scope: ScopeName | None = Field(
+        default=None, description="sent under this scope (SPEC 16), qualified: `pair_a` or `room/pair_a`"
+    )
+
+    @property
+    def qualified(self) -> str:
+        return f"{self.scope}/{self.message}" if self.scope else self.message
 
 
 class FailAt(Strict):
@@ -76,7 +86,9 @@ class PartnerAt(Strict):
     from then on it sends its notice to every agent of the test, as an agent waiting there does."""
 
     agent: Name = Field(description="its name: not an agent of the test")
-    barrier: str = Field(min_length=1, description="the barrier's name")
+    barrier: str | None = Field(
+        default=None, min_length=1, description="the barrier's name (none: a team mate that never arrives)"
+    )
     at: Seconds = 0
 
 
@@ -90,6 +102,7 @@ Time = Seconds | TimeRange
 
 class Sent(Strict):
     message: Name
+    scope: ScopeName | None = Field(default=None, description="sent under this scope (SPEC 16), qualified")
     to: Name | None = None
     data: dict[str, Any] | None = Field(default=None, description="these fields, with these values")
     at: Time | None = None
@@ -134,6 +147,14 @@ class Expect(AgentExpect):
     agents: dict[Name, AgentExpect] = Field(default_factory=dict)
 
 
+class ScopeIn(Strict):
+    """A scope the machine under test runs under, for the agents it lists, as if a caller's state
+    had `scope:` (SPEC 16)."""
+
+    name: ScopeName = Field(description="its qualified name: `pair_t1`, or `room/pair_t1` for a nested one")
+    agents: list[Name] = Field(min_length=1, description="its agents; each runs under it, leaving itself out")
+
+
 class Setup(Strict):
     """What a case runs: given in the file for every case, or in a case, which then wins key by key."""
 
@@ -153,6 +174,9 @@ class Setup(Strict):
     fail: list[FailAt] | None = Field(default=None, description="agents that fail, and when")
     partners: list[PartnerAt] | None = Field(
         default=None, description="scripted team mates that arrive at barriers (each entry one round)"
+    )
+    scopes: list[ScopeIn] | None = Field(
+        default=None, description="teams: each agent runs the machine under the scope that lists it"
     )
 
 

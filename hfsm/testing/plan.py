@@ -46,6 +46,7 @@ class CasePlan:
     expect: Expect
     expect_path: Path_
     pruned: set[str] = field(default_factory=set)  # machines not run: only stand-ins call them
+    scopes: dict[str, tuple[str, tuple[str, ...]]] = field(default_factory=dict)  # agent -> its scope
 
     @property
     def line(self) -> int:

@@ -34,7 +34,7 @@ def run_case(plan: CasePlan) -> CaseResult:
     trace = ListTrace()
     failing = [Failure(f.agent, f.at, f.reason) for f in plan.fail]
     options = RunOptions(
-        plan.top, plan.agents, plan.params, plan.seed, plan.max_time, failing, plan.agent_params
+        plan.top, plan.agents, plan.params, plan.seed, plan.max_time, failing, plan.agent_params, plan.scopes
     )
     try:
         result = run(program, world, options, trace)

@@ -51,6 +51,12 @@ ERRORS: dict[str, list[tuple[str, str, str]]] = {
     "retry_timeout_no_timer": [("7:18", "E327", "'wait'")],
     "retry_unknown": [("7:18", "E327", "did you mean 'failed'?")],
     "retry_unmapped": [("6:18", "E328", "'not_found'")],
+    "scope_literals": [
+        ("6:19", "E351", "'Pair-1'"),
+        ("11:33", "E352", "'a, b'"),
+        ("18:37", "E352", "not 7"),
+        ("21:19", "E314", "did you mean 'scope.name'?"),
+    ],
     "state_time_outputs": [("3:14", "E331", "'state.time'")],
     "two_saves": [("8:39", "E325", "'one'")],
     "watch_bad_target": [("5:11", "E301", "did you mean 'gave_up'?")],
