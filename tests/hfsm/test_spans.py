@@ -26,6 +26,7 @@ def under(line: str, col: int) -> str:
         ('      - if: "state.tim > 1"', 13, '"state.tim > 1"'),
         ("    with: {seconds: 1", 11, "{"),
         ('    with: {seconds: "${vars.cont + 1}"}', 24, "vars.cont"),
+        ('      - if: "${vars.n > 1}"', 14, "${vars.n > 1}"),
         ("outcomes: [done, failed]", 18, "failed"),
         ("    text: it's a value  # here", 11, "it's a value"),
     ],
