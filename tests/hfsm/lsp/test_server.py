@@ -240,7 +240,9 @@ async def test_every_suggestion_is_a_quick_fix(client: LanguageClient) -> None:
 async def test_a_test_file_gets_hfsm_tests_findings(client: LanguageClient, tmp_path: Path) -> None:
     (tmp_path / "fetch.yaml").write_text((DATA / "fetch.yaml").read_text())
     path = tmp_path / "fetch.test.yaml"  # written here: pytest would collect a bad one under tests/
-    path.write_text("machine: fetch\ntests:\n  gets_it:\n    params: {trys: 2}\n    expect: {outcome: gott}\n")
+    path.write_text(
+        "machine: fetch\ntests:\n  gets_it:\n    params: {trys: 2}\n    expect: {outcome: gott}\n"
+    )
     found = await open_file(client, path)
     assert [(d.code, d.range.start.line, d.range.start.character, d.message) for d in found] == [
         ("T303", 3, 13, "'fetch' has no param 'trys'; did you mean 'tries'?"),
