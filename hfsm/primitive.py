@@ -83,7 +83,7 @@ class Context(Protocol):
 
     @property
     def scope(self) -> str:
-        """The qualified name of the scope the primitive runs under (SPEC 16; '' outside every
+        """The qualified name of the scope the primitive runs under (REFERENCE.md#scopes; '' outside every
         scope): its messages' names are qualified by it, in `send` and in `receive`."""
 
 

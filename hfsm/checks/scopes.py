@@ -1,4 +1,4 @@
-"""A state's `scope:` (SPEC 16): its expressions compile, and its literals are a name and a list of
+"""A state's `scope:`: its expressions compile, and its literals are a name and a list of
 names (E351, E352). What an expression gives is checked when the state is entered."""
 
 from __future__ import annotations

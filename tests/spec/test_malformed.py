@@ -1,6 +1,6 @@
-"""Malformed v2 files (SPEC 9, 11-13): `hfsm-run --check` finds every error in one pass, each at
+"""Malformed v2 files (docs/REFERENCE.md: hfsm-run, parallel states, watches and retries): `hfsm-run --check` finds every error in one pass, each at
 its `FILE:LINE:COL` (the offending key or value) with its code and, for a misspelt name, a
-suggestion; exit 2, no traceback. Each file's first line says what is wrong and where the SPEC
+suggestion; exit 2, no traceback. Each file's first line says what is wrong and where the reference
 forbids it; the stand-in behaviours come from tests/spec/cases/ through `--lib`."""
 
 from __future__ import annotations
