@@ -1,4 +1,5 @@
-"""Finding and loading machine files by name, where the calling file lies (SPEC section 10).
+"""Finding and loading machine files by name, where the calling file lies (docs/REFERENCE.md,
+"Where a name in `do:` is looked up").
 
 A name in `do:` is looked up from the file that writes it. A *user* file (the run's own, or one
 found in a user folder: the top file's, a `--lib` folder) looks in its own folder, the top file's
@@ -12,17 +13,18 @@ resolves to (`shadow.py`).
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from hfsm import located
+from hfsm import located, salvage
 from hfsm.builtins import BUILTINS
 from hfsm.errors import Finding, Severity, UserError
 from hfsm.model import Machine, state_calls
-from hfsm.names import did_you_mean
+from hfsm.names import NAME_RULE, did_you_mean, is_name
 from hfsm.registry import Registry
 from hfsm.shadow import assign_keys, rewrite_calls
-from hfsm.yamlio import Document, read_mapping
+from hfsm.yamlio import Document, Path_, read_mapping
 
 PROJECT_MACHINES = Path(__file__).resolve().parent.parent / "machines"
 SUFFIXES = (".yaml", ".yml")
@@ -50,9 +52,32 @@ def shown(path: Path) -> Path:
 
 
 def load_machine_file(path: Path) -> MachineFile:
+    if not is_name(path.stem):
+        raise UserError([Finding(str(shown(path)), 1, 1, "E203", stem_problem(path))])
     doc = read_mapping(shown(path), "a machine")
     model = located.validate(Machine, doc)
     return MachineFile(path.stem, path, doc, model)
+
+
+def stem_problem(path: Path) -> str:
+    """Why a file's stem cannot name a machine, with a name it could have."""
+    better = re.sub(r"[^a-z0-9_]+", "_", path.stem.lower()).strip("_") or "machine"
+    if not better[0].isalpha():
+        better = "m_" + better
+    return (f"the file name '{path.name}' does not make a machine name ({NAME_RULE}): "
+            f"rename it, e.g. '{better}{path.suffix}'")
+
+
+def salvage_machine_file(
+    path: Path, text: str | None = None
+) -> tuple[MachineFile | None, list[Finding], set[Path_]]:
+    """The machine of a file, built from its well-formed part; every problem found on the way; the
+    states left out. Raises UserError only when nothing of it can be read (its YAML is broken)."""
+    problems: list[Finding] = []
+    doc = read_mapping(shown(path), "a machine", text=text, kept=problems)
+    model, findings, removed = salvage.validate(Machine, doc)
+    machine = MachineFile(path.stem, path, doc, model) if model is not None else None
+    return machine, problems + findings, removed
 
 
 def _unique(folders: list[Path]) -> list[Path]:
@@ -62,12 +87,21 @@ def _unique(folders: list[Path]) -> list[Path]:
 class Library:
     """The machines of one run: the top file's, and every machine they call, at any depth."""
 
-    def __init__(self, search: list[Path], registry: Registry, libraries: list[Path] | None = None) -> None:
+    def __init__(
+        self,
+        search: list[Path],
+        registry: Registry,
+        texts: dict[Path, str] | None = None,
+        libraries: list[Path] | None = None,
+    ) -> None:
         self.users = _unique([p for p in search if libraries is None or p not in libraries])
         self.libraries = _unique(libraries or [])
         self.registry = registry
         self.machines: dict[str, MachineFile] = {}
         self.findings: list[Finding] = []
+        self.texts = texts or {}  # files' texts as an editor holds them, by resolved path
+        self.removed: dict[str, set[Path_]] = {}  # by machine: states left out, their schema being wrong
+        self._removed: dict[Path, set[Path_]] = {}
         self._by_path: dict[Path, MachineFile] = {}
         self._calls: dict[Path, dict[str, Path]] = {}  # a file's callee names -> machine paths
         self._failed: set[Path] = set()  # files that could not be loaded, reported once
@@ -78,10 +112,12 @@ class Library:
         return _unique([*self.users, *self.libraries])
 
     @classmethod
-    def for_file(cls, top: Path, libs: list[Path], registry: Registry) -> Library:
+    def for_file(
+        cls, top: Path, libs: list[Path], registry: Registry, texts: dict[Path, str] | None = None
+    ) -> Library:
         libraries = [PROJECT_MACHINES, *(p.resolve() for p in registry.machine_folders)]
         users = [top.resolve().parent, *(p.resolve() for p in libs)]
-        return cls(users, registry, [p for p in libraries if p not in users])
+        return cls(users, registry, texts, [p for p in libraries if p not in users])
 
     def add_user_folder(self, folder: Path) -> None:
         """Another root's folder (a test run of several files): a user folder after the top file's."""
@@ -93,7 +129,7 @@ class Library:
         for folder in self.search if folders is None else folders:
             for suffix in SUFFIXES:
                 candidate = folder / f"{name}{suffix}"
-                if candidate.is_file():
+                if candidate in self.texts or candidate.is_file():
                     return candidate
         return None
 
@@ -105,7 +141,7 @@ class Library:
         return names
 
     def folders_of(self, machine: MachineFile) -> list[Path]:
-        """Where the names a file calls are looked for, in order (SPEC section 10)."""
+        """Where the names a file calls are looked for, in order (docs/REFERENCE.md#hfsm-run)."""
         own = machine.path.resolve().parent
         if machine.library:
             return _unique([own, *self.libraries])
@@ -137,11 +173,18 @@ class Library:
         if existing is not None or resolved in self._failed:
             return existing
         try:
-            machine = replace(load_machine_file(path), library=library)
+            salvaged, findings, removed = salvage_machine_file(path, self.texts.get(resolved))
         except UserError as err:
             self.findings.extend(err.findings)
             self._failed.add(resolved)
             return None
+        self.findings.extend(findings)
+        if salvaged is None:
+            self._failed.add(resolved)
+            return None
+        machine = replace(salvaged, library=library)
+        if removed:
+            self._removed[resolved] = removed
         if not self._check_name(machine):
             self._failed.add(resolved)
             return None  # it takes a built-in's name: reported once, then left out
@@ -200,6 +243,7 @@ class Library:
             model = rewrite_calls(machine.model, to_key)
             self._by_path[path] = replace(machine, name=keys[path], model=model)
         self.machines = {m.name: m for m in self._by_path.values()}
+        self.removed = {keys[path]: removed for path, removed in self._removed.items()}
         self.findings.extend(self._shadowing())
 
     def _shadowing(self) -> list[Finding]:

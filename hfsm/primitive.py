@@ -71,7 +71,7 @@ class Context(Protocol):
     def time(self) -> float: ...
 
     def wait(self, seconds: float | None = None) -> None:
-        """Block for a span of seconds (per SPEC 5), or one tick when None."""
+        """Block for a span of seconds (per docs/REFERENCE.md#time-and-timers), or one tick when None."""
 
     def wait_until(self, ready: Callable[[], bool], timeout: float = math.inf) -> bool:
         """Block tick by tick until `ready()` is true (True) or the timeout passes (False)."""
@@ -83,8 +83,8 @@ class Context(Protocol):
 
     @property
     def scope(self) -> str:
-        """The qualified name of the scope the primitive runs under (SPEC 16; '' outside every
-        scope): its messages' names are qualified by it, in `send` and in `receive`."""
+        """The qualified name of the scope the primitive runs under ('' outside every scope): its
+        messages' names are qualified by it, in `send` and in `receive` (docs/REFERENCE.md#scopes)."""
 
 
 PrimitiveFn = Callable[..., "str | Outcome"]

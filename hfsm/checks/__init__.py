@@ -1,4 +1,4 @@
-"""The checks run before anything runs (SPEC section 9): each small, named, with stable codes.
+"""The checks run before anything runs (docs/CHECKS.md): each small, named, with stable codes.
 
 Errors E1xx are the reader's, E2xx schema and names, E3xx meaning; warnings W4xx become errors
 with `--strict`. docs/CHECKS.md lists every code.

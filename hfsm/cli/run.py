@@ -1,4 +1,4 @@
-"""`hfsm-run`: check a machine file and run it (SPEC section 10)."""
+"""`hfsm-run`: check a machine file and run it (docs/REFERENCE.md#hfsm-run)."""
 
 from __future__ import annotations
 
@@ -7,11 +7,14 @@ import logging
 import sys
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from hfsm import plugins
 from hfsm.cli import guard, report
 from hfsm.cli.fail import check_failures, fail_arg
 from hfsm.cli.history import top_params
+from hfsm.cli.named import machine_path
+from hfsm.cli.newplugin import new_plugin, schema_hint
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import UsageError, UserError
 from hfsm.load import Loaded, load, worlds_needed
@@ -19,6 +22,9 @@ from hfsm.monitor import live
 from hfsm.names import is_name
 from hfsm.registry import Registry
 from hfsm.world import WORLDS_GROUP, NullWorld, World, WorldFactory
+
+if TYPE_CHECKING:
+    from hfsm.runtime.run import RunResult
 
 
 def _factories() -> dict[str, WorldFactory]:
@@ -55,9 +61,15 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     p.add_argument("--check", action="store_true", help="validate and exit")
     p.add_argument("--strict", action="store_true", help="warnings are errors")
     p.add_argument("--schema", action="store_true", help="print the JSON Schema of machine files")
-    p.add_argument("--list", action="store_true", help="print every behaviour a run can call (Markdown)")
+    p.add_argument("--list", nargs="?", const="", metavar="PATTERN",
+                   help="print every behaviour a run can call (Markdown), or those whose name or world "
+                   "matches PATTERN; with FILE, the machines beside it too")
+    p.add_argument("--new-plugin", type=Path, metavar="DIR",
+                   help="write a plug-in package to start from in DIR (a primitive, a machine, entry points)")
     p.add_argument("--traceback", action="store_true", help="show Python tracebacks of run-time errors")
     p.add_argument("--quiet", action="store_true", help="no summary table on stderr")
+    p.add_argument("--fail-exit", action="store_true",
+                   help="exit 3 when the top machine ends in one of its failures (timeout included)")
     p.add_argument(
         "--fail",
         action="append",
@@ -102,16 +114,19 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         from hfsm.schema import schema_text
 
         sys.stdout.write(schema_text())
+        print(schema_hint(), file=sys.stderr)
         return 0
-    if args.list:
+    if args.new_plugin is not None:
+        return new_plugin(args.new_plugin)
+    if args.list is not None:
         return _list(args)
     if args.file is None:
-        raise UsageError("give a machine file (or --schema, or --list)")
+        raise UsageError("give a machine file or name (or --list, --schema, --new-plugin DIR)")
     with stdout_to_stderr():
         registry = Registry.discover()
     if args.world is not None:
         registry = registry.for_world(args.world)
-    args.file = _named(args.file, args.lib, registry)
+    args.file = machine_path(args.file, args.lib, registry)
     inputs = {"none": NullWorld().inputs(), **{n: f.inputs() for n, f in factories.items()}}
     loaded = load(
         [args.file],
@@ -151,15 +166,6 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
             print(f"wrote {path}", file=sys.stderr)
 
 
-def _named(file: Path, libs: list[Path], registry: Registry) -> Path:
-    """FILE, or a machine's name (`hfsm-run move_furniture`) found in --lib folders and plug-ins."""
-    if file.exists() or not is_name(str(file)):
-        return file
-    from hfsm.library import Library
-
-    return Library([*libs, *registry.machine_folders], registry).find(str(file)) or file
-
-
 def _list(args: argparse.Namespace) -> int:
     from hfsm.cli.list import render
 
@@ -167,7 +173,8 @@ def _list(args: argparse.Namespace) -> int:
         registry = Registry.discover()
     if args.world is not None:
         registry = registry.for_world(args.world)
-    sys.stdout.write(render(registry, [*args.lib, *registry.machine_folders]))
+    beside = [args.file.parent] if args.file is not None and args.file.is_file() else []
+    sys.stdout.write(render(registry, [*beside, *args.lib, *registry.machine_folders], args.list))
     return 0
 
 
@@ -246,12 +253,40 @@ def _run(
     if not args.quiet:
         report.summary(result.stats, args.dt)
     if result.error:
-        print(f"error: {result.error}", file=sys.stderr)
+        _print_error(result, loaded)
         if args.traceback and result.traceback:
             print(result.traceback, file=sys.stderr, end="")
     if trace and not trace.failed:
         print(f"wrote {trace_path}", file=sys.stderr)
-    return stop.exit_code if stop.signum else result.exit_code
+    if stop.signum:
+        return stop.exit_code
+    failed = _failure_ends(result, loaded) if args.fail_exit and not result.error else []
+    for agent, outcome in failed:
+        print(f"hfsm-run: {agent} ended in the failure outcome '{outcome}' (--fail-exit: exit 3)",
+              file=sys.stderr)
+    return 3 if failed else result.exit_code
+
+
+def _failure_ends(result: RunResult, loaded: Loaded) -> list[tuple[str, str]]:
+    """The agents whose top machine ended in one of its failure outcomes, with the outcome."""
+    failures = loaded.roots[0].model.failure_outcomes
+    return [(name, end.outcome) for name, end in result.agents.items() if end.outcome in failures]
+
+
+def _print_error(result: RunResult, loaded: Loaded) -> None:
+    """The run's error, at the file, line and column of the state (or expression) it happened in."""
+    from hfsm.cli.runerror import locate
+
+    found = None
+    if result.error_origin and result.error:
+        top = loaded.roots[0].name
+        found = locate(
+            loaded.machines, top, result.error_origin, result.error, result.error_agent, result.time
+        )
+    if found is None:
+        print(f"error: {result.error}", file=sys.stderr)
+    else:
+        report.findings([found])
 
 
 def entry() -> None:

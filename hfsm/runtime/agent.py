@@ -67,8 +67,8 @@ class Frame:
     )  # fmt: skip
     entered: int  # the tick its current state was entered (set on entering it, as the two below)
     state_deadline: int | None
-    attempt: int  # the call of that state's behaviour, from 1 (SPEC 13)
-    radio: Radio  # the scope its machine runs under (SPEC 16)
+    attempt: int  # the call of that state's behaviour, from 1 (docs/REFERENCE.md#retries)
+    radio: Radio  # the scope its machine runs under (docs/REFERENCE.md#scopes)
     inner: Radio  # the scope its current state gives what it runs: `radio`, or the state's `scope:`
 
     def __init__(
@@ -161,7 +161,7 @@ class AgentResult:
     outcome: str | None
     outputs: dict[str, Any]
     time: float
-    failed: str | None = None  # the reason, when the agent failed (SPEC 15)
+    failed: str | None = None  # the reason, when the agent failed (docs/REFERENCE.md#agents-that-fail)
 
 
 class _NoClock:
@@ -197,7 +197,8 @@ class Agent:
 
     def take_message(self, names: Any, prefix: str = "") -> Message | None:
         """Remove and return the earliest message whose name is in `names`, sent under the scope
-        whose names begin with `prefix` (SPEC 16): `scope/name`, or a bare name outside every scope."""
+        whose names begin with `prefix` (docs/REFERENCE.md#scopes): `scope/name`, or a bare name
+        outside every scope."""
         if not prefix:
             for i, message in enumerate(self.mailbox):
                 if message.name in names:

@@ -96,7 +96,9 @@ class Arcs(Calls):
         agent.entries += 1
         if agent.entries > MAX_ENTRIES:
             path = "/".join(frame.path())
-            raise FatalError(agent.name, f"{path}: more than {MAX_ENTRIES} state entries in one tick")
+            raise FatalError(
+                agent.name, f"{path}: more than {MAX_ENTRIES} state entries in one tick", origin=path
+            )
         if state.is_choice:
             return self._choose(frame, state)
         if bad_timer is not None:
@@ -120,8 +122,8 @@ class Arcs(Calls):
 
     def _start_timer(self, frame: Frame, state: RState) -> Event | None:
         """The state's timer set (before its `enter` is written, which shows when it fires), then its
-        `scope:` read (SPEC 16: what it runs is under it until the state is left); or the error
-        either gave, taken once the state is entered."""
+        `scope:` read (what it runs is under it until the state is left: docs/REFERENCE.md#scopes);
+        or the error either gave, taken once the state is entered."""
         if state.timer is not None:
             ticks = self._ticks(state.timer, frame)
             if ticks.__class__ is Event:
@@ -148,7 +150,8 @@ class Arcs(Calls):
     def _watch(self, frame: Frame, state: RState) -> Event | None:
         """The first watch that holds, as the event that takes its arc (None: none holds).
 
-        A watch back to this state is passed over (SPEC 12): the state stays, and the watches after
+        A watch back to this state is passed over (docs/REFERENCE.md#watches): the state stays, and the
+        watches after
         it are tried, so a machine's watch into a state does not silence that state's own."""
         for watch in state.watches:
             try:

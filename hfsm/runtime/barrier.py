@@ -1,4 +1,5 @@
-"""The `barrier` built-in (SPEC 14): rounds per name, notices sent through the world, answers.
+"""The `barrier` built-in (docs/REFERENCE.md#barriers): rounds per name, notices sent through the world,
+answers.
 
 A notice (N, r) says "I am at barrier N, round r". Notices travel through the world like messages
 (its latency, its loss) but are the engine's own: they never enter a mailbox or the trace.
@@ -69,7 +70,8 @@ class Team:
         return [a for a in barrier.members if heard.get((barrier.name, a), 0) >= barrier.round]
 
     def live(self) -> bool:
-        """Whether a waiting barrier can still pass: for 'blocked forever' (SPEC 10 and 14).
+        """Whether a waiting barrier can still pass: for 'blocked forever' (docs/REFERENCE.md#hfsm-run,
+        docs/REFERENCE.md#barriers).
 
         It can while it holds enough notices, or while a notice it lacks can still come: one in
         flight, one a partner sends while waiting in it, or a partner's answer to its next notice.
@@ -149,7 +151,7 @@ def start_barrier(
     name, named, at_least = params["name"], params["agents"], params["at_least"]
     team = host.team
     radio = radio_at(where)
-    if not radio.top:  # SPEC 16: the scope's agents, and the name qualified by the scope
+    if not radio.top:  # the scope's agents (docs/REFERENCE.md#scopes), and the name qualified by the scope
         chosen = members_in(radio, agent.name, named)
         if isinstance(chosen, str):
             return Event("error", error=f"barrier '{name}': {chosen}")

@@ -1,4 +1,4 @@
-"""The running code of the built-in behaviours (SPEC section 8)."""
+"""The running code of the built-in behaviours (docs/REFERENCE.md#built-in-behaviours)."""
 
 from __future__ import annotations
 

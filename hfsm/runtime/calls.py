@@ -11,7 +11,7 @@ from hfsm.runtime.cancel import Cancelling
 from hfsm.runtime.primitives import PrimitiveActivity, RunContext
 from hfsm.runtime.program import RMachine, resolve_params, timer_ticks
 from hfsm.runtime.states import Callee
-from hfsm.spec import is_finite_number
+from hfsm.spec import is_finite_number, shown
 
 
 class Calls(Cancelling):
@@ -28,11 +28,11 @@ class Calls(Cancelling):
         except ExprValueError as exc:
             return Event("error", error=f"{what}: {exc}")
         if not is_finite_number(seconds) or seconds < 0 or (seconds == 0 and not zero):
-            return Event("error", error=f"{what} must be {takes}, not {seconds!r}")
+            return Event("error", error=f"{what} must be {takes}, not {shown(seconds)}")
         return float(seconds)
 
     def _params(self, callee: Callee, frame: Frame) -> dict[str, Any] | Event:
-        frame.in_with = True  # `scope.*` in a `with` reads the state's own scope (SPEC 16)
+        frame.in_with = True  # `scope.*` in a `with` reads the state's own scope (docs/REFERENCE.md#scopes)
         try:
             given = {k: v.fn(frame.scope) for k, v in callee.with_.items()}
         except ExprValueError as exc:
@@ -108,7 +108,8 @@ class Calls(Cancelling):
         return Event(outcome, outputs)
 
     def _retry(self, frame: Frame, event: Event) -> Event | None:
-        """The callee of `frame`'s state ended with `event`: call it again (SPEC 13), or hand it on."""
+        """The callee of `frame`'s state ended with `event`: call it again (docs/REFERENCE.md#retries), or
+        hand it on."""
         state = frame.state
         while event.name in state.retry_on:
             times = self._count_of(state.retry_times, frame, "times")
@@ -140,7 +141,8 @@ class Calls(Cancelling):
         return event
 
     def _next_attempt(self, frame: Frame) -> None:
-        """`state.attempt` grows as the behaviour is called again (SPEC 13), not during the delay."""
+        """`state.attempt` grows as the behaviour is called again (docs/REFERENCE.md#retries), not during the
+        delay."""
         frame.attempt += 1
         if frame.state.watches:
             self.wake = True  # the watches read it next in the following tick: not to be skipped

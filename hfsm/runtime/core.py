@@ -24,10 +24,11 @@ MAX_ENTRIES = 1000
 class FatalError(Exception):
     """Ends the whole run at once (exit 1): an error at the top, too many entries in one tick."""
 
-    def __init__(self, agent: str, message: str, traceback: str = "") -> None:
+    def __init__(self, agent: str, message: str, traceback: str = "", origin: str = "") -> None:
         super().__init__(message)
         self.agent = agent
         self.traceback = traceback
+        self.origin = origin  # the path of the state (or region) where it happened, when known
 
 
 class Core:
@@ -46,7 +47,7 @@ class Core:
         self._time = (0, 0.0)  # (tick, seconds) of the last time asked for
         self.running = len(agents)  # agents whose top machine has not ended
         self.spans: dict[float, int] = {}  # seconds -> ticks, for spans seen before
-        self.team = Team(self)  # barriers (SPEC 14)
+        self.team = Team(self)  # barriers (docs/REFERENCE.md#barriers)
         self.wake = False  # vars changed after a state's watches were tried: its next tick is due
 
     @property
@@ -101,7 +102,7 @@ class Core:
             agent.result = AgentResult(None, {}, self.time)
             self.emit(agent, [agent.top], "exit", outcome=None)
             origin = event.origin or agent.top
-            raise FatalError(agent.name, f"{origin}: {event.error}", event.traceback)
+            raise FatalError(agent.name, f"{origin}: {event.error}", event.traceback, origin)
         agent.result = AgentResult(event.name, event.outputs or {}, self.time)
         self.emit(agent, [agent.top], "exit", outcome=event.name)
 

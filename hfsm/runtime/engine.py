@@ -1,4 +1,5 @@
-"""What one agent does in one tick (SPEC 5, 11, 12), and the messages between agents.
+"""What one agent does in one tick (docs/REFERENCE.md#time-and-timers, docs/REFERENCE.md#parallel-states,
+docs/REFERENCE.md#watches), and the messages between agents.
 
 Within a tick, for each agent, from the outermost machine inwards: at each level the machine's
 timer, the state's timer, the earliest mapped message, the state's watches, a retry whose delay

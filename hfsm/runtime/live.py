@@ -45,7 +45,7 @@ class Inputs:
 
 
 def seconds(ticks: int, dt: float) -> float:
-    """A count of ticks as seconds, rounded to 9 places: 6 * 0.05 is 0.3 (SPEC 12)."""
+    """A count of ticks as seconds, rounded to 9 places: 6 * 0.05 is 0.3 (docs/REFERENCE.md#watches)."""
     return round(ticks * dt, 9)
 
 

@@ -1,4 +1,5 @@
-"""Parallel states (SPEC 11): regions started in order, stepped in order, joined by the first rule."""
+"""Parallel states (docs/REFERENCE.md#parallel-states): regions started in order, stepped in order, joined by
+the first rule."""
 
 from __future__ import annotations
 

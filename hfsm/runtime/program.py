@@ -16,7 +16,7 @@ from hfsm.registry import Registry
 from hfsm.runtime.scopes import ScopeCode
 from hfsm.runtime.states import Callee, RMachine, RRegion, RState, Watch
 from hfsm.runtime.states import JoinRule as RJoin
-from hfsm.spec import BehaviourSpec, coerce, is_finite_number, type_ok
+from hfsm.spec import BehaviourSpec, coerce, is_finite_number, shown, type_ok
 from hfsm.values import compile_value
 
 __all__ = ["Program", "RMachine", "RState", "machine_params", "resolve_params", "span_ticks", "timer_ticks"]
@@ -25,7 +25,7 @@ Resolve = Callable[[str], "RState | str"]
 
 
 def span_ticks(seconds: float, dt: float) -> int:
-    """Ticks from the tick a span begins to the tick it ends in (SPEC section 5)."""
+    """Ticks from the tick a span begins to the tick it ends in (docs/REFERENCE.md#time-and-timers)."""
     return math.ceil(seconds / dt - 1e-9)
 
 
@@ -43,7 +43,7 @@ def resolve_params(spec: BehaviourSpec, given: Mapping[str, Any]) -> dict[str, A
         if name in given:
             value = given[name]
             if not type_ok(value, param.type):
-                return f"param '{name}' of '{spec.name}' takes {param.type}, not {value!r}"
+                return f"param '{name}' of '{spec.name}' takes {param.type}, not {shown(value)}"
             params[name] = coerce(value, param.type)
         elif not param.required:
             params[name] = param.default

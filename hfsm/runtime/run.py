@@ -23,6 +23,8 @@ class RunResult:
     error: str | None = None
     traceback: str = ""
     stats: dict[str, dict[str, BehaviourStats]] = field(default_factory=dict)
+    error_agent: str = ""  # who met the error, and the path of the state where (when known)
+    error_origin: str = ""
 
     @property
     def exit_code(self) -> int:
@@ -50,7 +52,7 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
     if options.scopes:
         run_under(agents, options.scopes)
     try:
-        error, tb = _loop(engine, program, options, world)
+        error, tb, fatal = _loop(engine, program, options, world)
         if error:
             _stop_all(engine, agents)
     finally:
@@ -59,10 +61,14 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
     if not error and all_failed(agents):
         error = "every agent failed"
     results = {a.name: a.result or AgentResult(None, {}, engine.time) for a in agents}
-    return RunResult(results, engine.time, error, tb, {a.name: a.stats for a in agents})
+    stats = {a.name: a.stats for a in agents}
+    who, origin = (fatal.agent, fatal.origin) if fatal is not None else ("", "")
+    return RunResult(results, engine.time, error, tb, stats, who, origin)
 
 
-def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -> tuple[str | None, str]:
+def _loop(
+    engine: Engine, program: Program, options: RunOptions, world: World
+) -> tuple[str | None, str, FatalError | None]:
     agents = engine.agents
     last = span_ticks(options.max_time, program.dt)
     top = program.machines[options.top]
@@ -74,7 +80,7 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
         while engine.running:
             following = _next_tick(engine, failures) if world.static else engine.tick + 1
             if following is None or following > last:
-                return _stopped(engine, following, last, options.max_time), ""
+                return _stopped(engine, following, last, options.max_time), "", None
             if not world.static:
                 world.advance(engine.tick)
                 _world_records(engine, world_records, following)
@@ -91,8 +97,8 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
             if engine.records is not None:
                 engine.records.flush()
     except FatalError as exc:
-        return exc.args[0], exc.traceback
-    return None, ""
+        return exc.args[0], exc.traceback, exc
+    return None, "", None
 
 
 def _start(engine: Engine, top: RMachine, options: RunOptions) -> None:

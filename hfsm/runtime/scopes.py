@@ -1,4 +1,5 @@
-"""Scopes (SPEC 16): the private radio a state gives what it runs, and message names qualified by it.
+"""Scopes (docs/REFERENCE.md#scopes): the private radio a state gives what it runs, and message
+names qualified by it.
 
 Each running machine frame knows the radio its machine runs under (`Frame.radio`) and the one its
 current state gives its behaviour (`Frame.inner`: a new one when the state has a `scope:`, else the
@@ -68,7 +69,7 @@ def open_scope(code: ScopeCode, read: Any, me: str, outer: Radio, order: Mapping
 
 
 def targets(radio: Radio, me: str, to: str) -> list[str] | str:
-    """The agents a `send` under `radio` goes to (SPEC 16), or a problem as text."""
+    """The agents a `send` under `radio` goes to (docs/REFERENCE.md#scopes), or a problem as text."""
     if to == "others":
         return list(radio.agents)
     if to == "all":

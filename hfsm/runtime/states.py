@@ -28,7 +28,7 @@ class Callee:
 
 
 class RRegion(Callee):
-    """One region of a parallel state (SPEC 11)."""
+    """One region of a parallel state (docs/REFERENCE.md#parallel-states)."""
 
     __slots__ = ("background", "index", "name")
 
@@ -105,7 +105,7 @@ class RState(Callee):
         self.join: tuple[JoinRule, ...] = ()
         self.plain = False  # a call state without watches or retry: entered the quick way
         self.stepped = False  # it has watches or a retry: its own level does more in each tick
-        self.scope: Any = None  # a `scope:` (SPEC 16): a runtime.scopes.ScopeCode
+        self.scope: Any = None  # a `scope:` (docs/REFERENCE.md#scopes): a runtime.scopes.ScopeCode
 
 
 class RMachine:

@@ -34,8 +34,9 @@ def full_registry() -> Registry:
         return Registry.discover()
 
 
-def read_test_file(path: Path, registry: Registry | None = None) -> list[CasePlan]:
-    doc = read_mapping(shown(path), "a behaviour test")
+def read_test_file(path: Path, registry: Registry | None = None, text: str | None = None) -> list[CasePlan]:
+    """Every case of the file, checked (`text`: the file's text, when not the disk's)."""
+    doc = read_mapping(shown(path), "a behaviour test", text=text)
     model = located.validate(TestFile, doc)
     checker = _FileChecker(path, doc, model, registry or full_registry())
     plans = [checker.case(name, case) for name, case in model.tests.items()]

@@ -54,7 +54,8 @@ class InputsAt(Strict):
 
 
 class MessageIn(Strict):
-    """A message that enters the mailboxes at time `at`, as if sent by agent `from` (SPEC 6)."""
+    """A message that enters the mailboxes at time `at`, as if sent by agent `from`
+    (docs/REFERENCE.md#messages-between-agents)."""
 
     at: Seconds = 0
     from_: Name = Field(alias="from", description="the sender: any name, in the run or not")
@@ -62,7 +63,7 @@ class MessageIn(Strict):
     to: Name | None = Field(default=None, description="absent: every agent of the test but the sender")
     data: dict[str, Any] = Field(default_factory=dict)
     scope: ScopeName | None = Field(
-        default=None, description="sent under this scope (SPEC 16), qualified: `pair_a` or `room/pair_a`"
+        default=None, description="sent under this scope, qualified: `pair_a` or `room/pair_a`"
     )
 
     @property
@@ -71,7 +72,8 @@ class MessageIn(Strict):
 
 
 class FailAt(Strict):
-    """An agent that fails at time `at` (SPEC 15): it acts no more, sends nothing, hears nothing."""
+    """An agent that fails at time `at` (docs/REFERENCE.md#agents-that-fail): it acts no more, sends nothing,
+    hears nothing."""
 
     agent: Name
     at: Seconds
@@ -79,7 +81,8 @@ class FailAt(Strict):
 
 
 class PartnerAt(Strict):
-    """A scripted team mate outside the test that arrives at barrier `barrier` at time `at` (SPEC 14):
+    """A scripted team mate outside the test that arrives at barrier `barrier` at time `at`
+    (docs/REFERENCE.md#barriers):
     from then on it sends its notice to every agent of the test, as an agent waiting there does."""
 
     agent: Name = Field(description="its name: not an agent of the test")
@@ -99,7 +102,7 @@ Time = Seconds | TimeRange
 
 class Sent(Strict):
     message: Name
-    scope: ScopeName | None = Field(default=None, description="sent under this scope (SPEC 16), qualified")
+    scope: ScopeName | None = Field(default=None, description="sent under this scope, qualified")
     to: Name | None = None
     data: dict[str, Any] | None = Field(default=None, description="these fields, with these values")
     at: Time | None = None
@@ -118,7 +121,8 @@ class InOrderSends(Strict):
 
 class AgentExpect(Strict):
     outcome: Name | None = Field(default=None, description="null: the agent did not end")
-    failed: bool | None = Field(default=None, description="whether the agent failed (SPEC 15)")
+    failed: bool | None = Field(
+        default=None, description="whether the agent failed (docs/REFERENCE.md#agents-that-fail)")
     time: Time | None = Field(default=None, description="when its top machine ended (s)")
     outputs: dict[str, Any] | None = Field(default=None, description="these outputs, with these values")
     states: list[StatePath] | InOrderStates | None = Field(
@@ -145,7 +149,7 @@ class Expect(AgentExpect):
 
 class ScopeIn(Strict):
     """A scope the machine under test runs under, for the agents it lists, as if a caller's state
-    had `scope:` (SPEC 16)."""
+    had `scope:` (docs/REFERENCE.md#scopes)."""
 
     name: ScopeName = Field(description="its qualified name: `pair_t1`, or `room/pair_t1` for a nested one")
     agents: list[Name] = Field(min_length=1, description="its agents; each runs under it, leaving itself out")

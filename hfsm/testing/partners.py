@@ -1,4 +1,5 @@
-"""Scripted barrier partners of a behaviour test (SPEC 14): team mates that are no agents of the run.
+"""Scripted barrier partners of a behaviour test (docs/REFERENCE.md#barriers): team mates that are no agents
+of the run.
 
 A partner that arrives at barrier N at time S sends its notice (N, its round) to every agent of the
 test in every tick from then on. In a lossless world this is what an agent that waits there and

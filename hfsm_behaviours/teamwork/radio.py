@@ -41,7 +41,8 @@ def partner_silent(
     """Listen to a partner's heartbeat (`message`, as `say` sends it, from `partner` only; '': from
     any robot, as under a pair's scope, where only the other robot's can come) until
     it has been silent for `silence` seconds, or was never heard within `grace` seconds (it may
-    start later). A failed robot says nothing (SPEC 15): this is how its partner learns of it.
+    start later). A failed robot says nothing (docs/REFERENCE.md#agents-that-fail): this is how its
+    partner learns of it.
     `heard`: whether the partner was heard at all."""
     quiet, late = span_ticks(silence, ctx.dt), span_ticks(grace, ctx.dt)
     start = ctx.tick

@@ -71,7 +71,7 @@ def test_inputs_are_read_only_when_evaluated() -> None:
         ("machine.time", Names(["x"], None, machine_time=False), "'machine.time' cannot be read in"),
         ("in.bearng", Names([], [], inputs=["bearing"]), "unknown input 'in.bearng' (the world declares"),
         ("in.x", Names([], [], inputs=[]), "(the world declares none)"),
-        ("in.a.b", NAMES, "'in.a.b': only"),
+        ("in.a.b", NAMES, "'in.a.b': no attribute access"),
         ("__in__.x", NAMES, "unknown name '__in__'"),
     ],
 )

@@ -6,6 +6,7 @@ import textwrap
 from pathlib import Path
 
 import pytest
+from helpers import finding_lines
 
 from hfsm.cli.test import main
 
@@ -286,7 +287,7 @@ def test_bad_test_files_exit_2_with_every_problem_at_its_position(
     code, out, err = hfsm_test(capsys, path)
     assert (code, out) == (2, "")
     file = path.relative_to(Path.cwd()) if path.is_relative_to(Path.cwd()) else path
-    assert err.splitlines() == [
+    assert finding_lines(err) == [
         f"{file}:3:10: error[T303]: 'ping' has no param 'trys'; did you mean 'tries'?",
         f"{file}:5:3: error[T310]: 'wait_for' is a built-in: script what it waits for, not the built-in",
         f"{file}:9:45: error[T311]: no agent 'c' in this test",
@@ -322,7 +323,7 @@ def test_a_world_primitive_left_without_a_stand_in_is_named(
     )
     code, _, err = hfsm_test(capsys, path)
     assert code == 2
-    assert err.strip().endswith(
+    assert finding_lines(err)[-1].endswith(
         "lift.test.yaml:1:10: error[T313]: 'synchronised_lift_table' calls primitives of world 'sim' with "
         "no stand-in: lift_table; add each to `stand_ins:` (tests run without a world)"
     )
@@ -405,7 +406,7 @@ def test_machines_by_path_and_by_lib_and_picking_cases(
     )
     code, _, err = hfsm_test(capsys, path)
     assert code == 2
-    assert err.strip().endswith(
+    assert finding_lines(err)[-1].endswith(
         "nap.test.yaml:9:3: error[T300]: no machine to test: give `machine:` here or at the top of the file"
     )
     path.write_text(path.read_text().replace("  nothing_to_test:\n    expect: {}\n", ""))
