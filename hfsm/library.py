@@ -1,5 +1,4 @@
-"""Finding and loading machine files by name, where the calling file lies (docs/REFERENCE.md,
-"Where a name in `do:` is looked up").
+"""Finding and loading machine files by name, where the calling file lies (docs/REFERENCE.md, "Where a name is looked up").
 
 A name in `do:` is looked up from the file that writes it. A *user* file (the run's own, or one
 found in a user folder: the top file's, a `--lib` folder) looks in its own folder, the top file's
@@ -73,6 +72,8 @@ def salvage_machine_file(
 ) -> tuple[MachineFile | None, list[Finding], set[Path_]]:
     """The machine of a file, built from its well-formed part; every problem found on the way; the
     states left out. Raises UserError only when nothing of it can be read (its YAML is broken)."""
+    if not is_name(path.stem):
+        raise UserError([Finding(str(shown(path)), 1, 1, "E203", stem_problem(path))])
     problems: list[Finding] = []
     doc = read_mapping(shown(path), "a machine", text=text, kept=problems)
     model, findings, removed = salvage.validate(Machine, doc)
@@ -91,17 +92,16 @@ class Library:
         self,
         search: list[Path],
         registry: Registry,
-        texts: dict[Path, str] | None = None,
         libraries: list[Path] | None = None,
+        texts: dict[Path, str] | None = None,
     ) -> None:
+        self.texts = texts or {}  # files' texts as an editor holds them, by resolved path
+        self.removed: dict[str, set[Path_]] = {}  # by file: states left out, their schema being wrong
         self.users = _unique([p for p in search if libraries is None or p not in libraries])
         self.libraries = _unique(libraries or [])
         self.registry = registry
         self.machines: dict[str, MachineFile] = {}
         self.findings: list[Finding] = []
-        self.texts = texts or {}  # files' texts as an editor holds them, by resolved path
-        self.removed: dict[str, set[Path_]] = {}  # by machine: states left out, their schema being wrong
-        self._removed: dict[Path, set[Path_]] = {}
         self._by_path: dict[Path, MachineFile] = {}
         self._calls: dict[Path, dict[str, Path]] = {}  # a file's callee names -> machine paths
         self._failed: set[Path] = set()  # files that could not be loaded, reported once
@@ -117,7 +117,7 @@ class Library:
     ) -> Library:
         libraries = [PROJECT_MACHINES, *(p.resolve() for p in registry.machine_folders)]
         users = [top.resolve().parent, *(p.resolve() for p in libs)]
-        return cls(users, registry, texts, [p for p in libraries if p not in users])
+        return cls(users, registry, [p for p in libraries if p not in users], texts)
 
     def add_user_folder(self, folder: Path) -> None:
         """Another root's folder (a test run of several files): a user folder after the top file's."""
@@ -141,7 +141,7 @@ class Library:
         return names
 
     def folders_of(self, machine: MachineFile) -> list[Path]:
-        """Where the names a file calls are looked for, in order (docs/REFERENCE.md#hfsm-run)."""
+        """Where the names a file calls are looked for, in order (docs/REFERENCE.md)."""
         own = machine.path.resolve().parent
         if machine.library:
             return _unique([own, *self.libraries])
@@ -184,7 +184,7 @@ class Library:
             return None
         machine = replace(salvaged, library=library)
         if removed:
-            self._removed[resolved] = removed
+            self.removed[machine.doc.file] = removed
         if not self._check_name(machine):
             self._failed.add(resolved)
             return None  # it takes a built-in's name: reported once, then left out
@@ -243,7 +243,6 @@ class Library:
             model = rewrite_calls(machine.model, to_key)
             self._by_path[path] = replace(machine, name=keys[path], model=model)
         self.machines = {m.name: m for m in self._by_path.values()}
-        self.removed = {keys[path]: removed for path, removed in self._removed.items()}
         self.findings.extend(self._shadowing())
 
     def _shadowing(self) -> list[Finding]:

@@ -100,6 +100,6 @@ def check_files(
     if world_inputs is not None:
         inputs = world_inputs.get(world_of(library.machines, registry, world), NO_INPUTS)
     docs = {m.doc.file: m.doc for m in library.machines.values()}
-    removed = {library.machines[n].doc.file: paths for n, paths in library.removed.items()}
+    removed = dict(library.removed)
     findings = salvage.consequences(run_checks(library.machines, registry, inputs), docs, removed)
     return library, roots, sorted(set(library.findings + findings))

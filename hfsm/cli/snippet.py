@@ -59,8 +59,9 @@ def render(finding: Finding, source: list[str] | None, *, colour: bool = False) 
     if source is None or not 0 < finding.line <= len(source):
         return head
     raw = source[finding.line - 1]
-    text = raw.replace("\t", TAB)
     start, end = span(raw, finding.col)
+    raw, start, end = _window(raw, start, end)
+    text = raw.replace("\t", TAB)
     before, under = raw[: start - 1], raw[start - 1 : end - 1]
     number = str(finding.line)
     gutter = " " * len(number)
@@ -69,6 +70,22 @@ def render(finding: Finding, source: list[str] | None, *, colour: bool = False) 
     return "\n".join(
         [head, f"{gutter} {bar}", f"{paint(_BLUE, number)} {bar} {text}".rstrip(), f"{gutter} {bar} {carets}"]
     )
+
+
+WIDE = 100  # characters of a source line shown around the span; a longer line is cut with '…'
+
+
+def _window(raw: str, start: int, end: int) -> tuple[str, int, int]:
+    """The part of a long line around the span (columns from 1, `end` just after it)."""
+    if len(raw) <= WIDE:
+        return raw, start, end
+    first = max(0, start - 1 - WIDE // 3)
+    last = min(len(raw), first + WIDE)
+    head = "…" if first > 0 else ""
+    tail = "…" if last < len(raw) else ""
+    start = start - first + len(head)
+    end = min(end, last + 1) - first + len(head)
+    return head + raw[first:last] + tail, start, max(end, start + 1)
 
 
 def _width(text: str) -> int:
