@@ -1,5 +1,4 @@
-"""Finding and loading machine files by name, where the calling file lies (docs/REFERENCE.md,
-"Where a name in `do:` is looked up").
+"""Finding and loading machine files by name, where the calling file lies (docs/REFERENCE.md).
 
 A name in `do:` is looked up from the file that writes it. A *user* file (the run's own, or one
 found in a user folder: the top file's, a `--lib` folder) looks in its own folder, the top file's

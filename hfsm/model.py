@@ -69,8 +69,7 @@ class Retry(Strict):
 
 
 class ScopeSpec(Strict):
-    """A team within the team for what the state runs: a private radio with these agents
-    (docs/REFERENCE.md#scopes)."""
+    """A team within the team for what the state runs: a private radio with these agents."""
 
     name: str = Field(description="a name, or an expression giving one; qualified inside an outer scope")
     agents: list[Any] | str = Field(description="agent ids of the enclosing scope, or an expression of them")
@@ -85,6 +84,9 @@ class CallState(Strict):
     watch: list[Watch] = Field(default_factory=list)
     retry: Retry | None = None
     scope: ScopeSpec | None = None
+    autonomy: dict[str, str] = Field(
+        default_factory=dict, description="event -> level (off, low, high, full) below which its arc is held"
+    )
     doc: str | None = None
 
 
@@ -128,6 +130,9 @@ class ParallelState(Strict):
     on: dict[Name, Name] = Field(default_factory=dict, description="event -> state or outcome")
     watch: list[Watch] = Field(default_factory=list)
     scope: ScopeSpec | None = None
+    autonomy: dict[str, str] = Field(
+        default_factory=dict, description="event or join:TARGET -> level below which its arc is held"
+    )
     doc: str | None = None
 
 

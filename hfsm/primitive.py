@@ -83,8 +83,8 @@ class Context(Protocol):
 
     @property
     def scope(self) -> str:
-        """The qualified name of the scope the primitive runs under ('' outside every scope): its
-        messages' names are qualified by it, in `send` and in `receive` (docs/REFERENCE.md#scopes)."""
+        """The qualified name of the scope the primitive runs under (REFERENCE.md#scopes; '' outside every
+        scope): its messages' names are qualified by it, in `send` and in `receive`."""
 
 
 PrimitiveFn = Callable[..., "str | Outcome"]

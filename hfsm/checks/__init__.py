@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 
+from hfsm.checks.autonomy import check_autonomy
 from hfsm.checks.calls import check_calls
 from hfsm.checks.context import CheckContext
 from hfsm.checks.expressions import check_expressions, check_param_defaults
@@ -45,6 +46,7 @@ MACHINE_CHECKS: tuple[MachineCheck, ...] = (
     check_state_graph,
     check_regions,
     check_forgotten_wraps,
+    check_autonomy,
     check_scopes,
 )
 

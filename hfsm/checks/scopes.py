@@ -1,6 +1,5 @@
-"""A state's `scope:` (docs/REFERENCE.md#scopes): its expressions compile, and its literals are a
-name and a list of names (E351, E352). What an expression gives is checked when the state is
-entered."""
+"""A state's `scope:`: its expressions compile, and its literals are a name and a list of
+names (E351, E352). What an expression gives is checked when the state is entered."""
 
 from __future__ import annotations
 

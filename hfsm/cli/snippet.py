@@ -12,12 +12,14 @@ terminal, and never when NO_COLOR is set (https://no-color.org).
 from __future__ import annotations
 
 import os
+import stat
 from collections.abc import Callable
 from pathlib import Path
 from typing import TextIO
 
 from hfsm.errors import Finding, Severity
 from hfsm.spans import span
+from hfsm.yamlio import MAX_BYTES
 
 _RED, _YELLOW, _BLUE, _BOLD, _RESET = "\x1b[31m", "\x1b[33m", "\x1b[34m", "\x1b[1m", "\x1b[0m"
 TAB = "    "
@@ -38,13 +40,21 @@ def file_lines() -> Source:
 
     def lines(file: str) -> list[str] | None:
         if file not in cache:
-            try:
-                cache[file] = Path(file).read_text(encoding="utf-8").splitlines()
-            except (OSError, UnicodeDecodeError):
-                cache[file] = None
+            cache[file] = _read(Path(file))
         return cache[file]
 
     return lines
+
+
+def _read(path: Path) -> list[str] | None:
+    """A regular file's lines, never blocking on a FIFO or a device, nor reading a huge file."""
+    try:
+        info = path.stat()
+        if not stat.S_ISREG(info.st_mode) or info.st_size > MAX_BYTES:
+            return None
+        return path.read_text(encoding="utf-8").splitlines()
+    except (OSError, UnicodeDecodeError):
+        return None
 
 
 def render(finding: Finding, source: list[str] | None, *, colour: bool = False) -> str:

@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable, Collection, Mapping, Sequence
 from dataclasses import dataclass, field
 
+from hfsm.autonomy import LEVELS, join_key
 from hfsm.checks.context import CheckContext
 from hfsm.diagram import regions, text
 from hfsm.diagram.model import Cluster, Edge, Figure, Item, Node, Ref, Role, Style
@@ -158,13 +159,16 @@ class Builder:
             lhead = "" if arc.target in outcomes or arc.target not in inner else inner[arc.target].lhead
             style = _STYLE[arc.kind]
             ref = (*rel, arc.source)
-            label = _label(arc)
+            level = _level(m, arc)
+            label = f"{_label(arc)} ({level})" if level else _label(arc)
             key = (tail, head, style, ltail, ref)
             old = merged.get(key)
             labels, events = (
                 ((*old.labels, label), (*old.events, arc.event)) if old else ((label,), (arc.event,))
             )
-            merged[key] = Edge(tail, head, labels, style, ref, events, ltail, lhead=lhead)
+            if old is not None and old.level and (not level or LEVELS.index(old.level) > LEVELS.index(level)):
+                level = old.level
+            merged[key] = Edge(tail, head, labels, style, ref, events, ltail, lhead=lhead, level=level)
         return [*merged.values(), *retries]
 
     def _retry(
@@ -213,6 +217,15 @@ class Builder:
         if arc.kind not in ("message", "watch", "join") and arc.event in part.outcomes:
             return part.outcomes[arc.event], ""
         return part.entry, cluster_id((*rel, arc.source))
+
+
+def _level(m: Machine, arc: Arc) -> str:
+    """The autonomy level the arc needs, or ''."""
+    state = m.states.get(arc.source)
+    if not isinstance(state, CallState | ParallelState) or not state.autonomy:
+        return ""
+    key = join_key(arc.target) if arc.kind in ("join", "else") else arc.event
+    return state.autonomy.get(key, "")
 
 
 def _label(arc: Arc) -> str:

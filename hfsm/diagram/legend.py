@@ -101,6 +101,12 @@ def legend() -> Figure:
         firsts.append(node.id)
     for label, style, meaning in _EDGES:
         items += _arc_row(label, style, meaning, edges, rows, firsts)
+    held = (
+        "coloured, its level in parentheses: an arc that needs that autonomy level; below it the arc "
+        "is held until the operator answers (autonomy:)"
+    )
+    items += _arc_row("failed (high)", "failure", held, edges, rows, firsts)
+    edges[-1] = Edge(edges[-1].source, edges[-1].target, edges[-1].labels, "failure", level="high")
     retried = Node("retried", "primitive", "state", ("navigate()",))
     note = Node(
         "retried@note",

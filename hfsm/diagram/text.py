@@ -79,8 +79,8 @@ _LEADING_TEXT = re.compile(r"""^\s*(['"])([a-z0-9_]*)\1\s*\+""")
 
 
 def scope(name: str) -> str:
-    """A state's `scope:` as its label line (docs/REFERENCE.md#scopes): `scope: pair` for a literal
-    name; for an expression that starts with a literal, that literal and an ellipsis (`scope: pair_…`)."""
+    """A state's `scope:` as its label line (REFERENCE.md#scopes): `scope: pair` for a literal name; for an
+    expression that starts with a literal, that literal and an ellipsis (`scope: pair_…`)."""
     found = _WHOLE_EXPR.match(name.strip())
     if found is None:
         return f"scope: {name}"

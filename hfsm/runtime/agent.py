@@ -46,6 +46,9 @@ class Event:
         self.message = message
 
 
+HELD = Event("held")  # a state entered holds an arc at once: it waits, nothing is taken
+
+
 class Activity(Protocol):
     """A running built-in or primitive: a leaf of an agent's tree."""
 
@@ -61,7 +64,7 @@ class Frame:
     """One running machine: its memory, its current state, its timers, and what runs below it."""
 
     __slots__ = (
-        "_prefix", "_scope", "agent", "attempt", "below", "deadline", "entered", "in_with", "inner",
+        "_prefix", "_scope", "agent", "attempt", "below", "deadline", "entered", "held", "in_with", "inner",
         "machine", "params", "radio", "retry_at", "started", "state", "state_deadline", "text", "up",
         "vars", "vars_shown",
     )  # fmt: skip
@@ -94,6 +97,7 @@ class Frame:
             self.radio = up.inner if isinstance(up, Frame) else up.owner.inner
         self.inner = self.radio
         self.in_with = False  # a state's `with` being read: `scope.*` is the state's own scope
+        self.held: Any = None  # the arc its state holds for the operator (a holds.Hold)
 
     @property
     def scope(self) -> Scope:
@@ -197,8 +201,7 @@ class Agent:
 
     def take_message(self, names: Any, prefix: str = "") -> Message | None:
         """Remove and return the earliest message whose name is in `names`, sent under the scope
-        whose names begin with `prefix` (docs/REFERENCE.md#scopes): `scope/name`, or a bare name
-        outside every scope."""
+        whose names begin with `prefix`: `scope/name`, or a bare name outside every scope."""
         if not prefix:
             for i, message in enumerate(self.mailbox):
                 if message.name in names:

@@ -151,7 +151,7 @@ def start_barrier(
     name, named, at_least = params["name"], params["agents"], params["at_least"]
     team = host.team
     radio = radio_at(where)
-    if not radio.top:  # the scope's agents (docs/REFERENCE.md#scopes), and the name qualified by the scope
+    if not radio.top:  # docs/REFERENCE.md#scopes: the scope's agents, and the name qualified by the scope
         chosen = members_in(radio, agent.name, named)
         if isinstance(chosen, str):
             return Event("error", error=f"barrier '{name}': {chosen}")

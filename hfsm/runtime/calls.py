@@ -68,8 +68,12 @@ class Calls(Cancelling):
                 where.below = None
             return ended
         if kind == "primitive":
-            ctx = RunContext(self, agent, callee.do, where)
-            activity: Any = PrimitiveActivity(callee.callee, ctx, params, where)  # type: ignore[arg-type]
+            starts = getattr(callee.callee, "start_activity", None)  # a stand-in of hfsm-verify
+            if starts is not None:
+                activity: Any = starts(self, agent, params, where)
+            else:
+                ctx = RunContext(self, agent, callee.do, where)
+                activity = PrimitiveActivity(callee.callee, ctx, params, where)  # type: ignore[arg-type]
         else:
             activity = STARTERS[kind](self, agent, frame, params, where)  # type: ignore[arg-type]
             if activity.__class__ is Event:

@@ -6,6 +6,7 @@ import math
 from collections.abc import Callable, Mapping
 from typing import Any
 
+from hfsm.autonomy import join_key, level_of
 from hfsm.builtins import BUILTINS
 from hfsm.checks.context import machine_spec
 from hfsm.expr import TIMED, Fn, Names, compile_expr, reads
@@ -118,6 +119,7 @@ class Program:
             else:
                 self._parallel(rs, state, names, target)
             rs.stepped = bool(rs.watches or rs.retry_on)
+            rs.autonomy = {event: level_of(level) for event, level in state.autonomy.items()}
 
     def _callee(self, callee: Callee, call: CallState | Region, names: Names) -> None:
         callee.do = call.do
@@ -193,4 +195,5 @@ class Program:
                 rules.append(RJoin(when, target(rule.then), text))
             else:
                 rules.append(RJoin((), target(rule.else_), "else"))
+            rs.join_keys[rules[-1].text] = join_key(rule.then if isinstance(rule, JoinRule) else rule.else_)
         rs.join = tuple(rules)

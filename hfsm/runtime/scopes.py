@@ -1,5 +1,4 @@
-"""Scopes (docs/REFERENCE.md#scopes): the private radio a state gives what it runs, and message
-names qualified by it.
+"""Scopes: the private radio a state gives what it runs, and message names qualified by it.
 
 Each running machine frame knows the radio its machine runs under (`Frame.radio`) and the one its
 current state gives its behaviour (`Frame.inner`: a new one when the state has a `scope:`, else the

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 from pydantic import ConfigDict, Discriminator, Field, StringConstraints, Tag
 
@@ -92,6 +92,21 @@ class PartnerAt(Strict):
     at: Seconds = 0
 
 
+Level = Literal["off", "low", "high", "full"]
+
+
+class OperatorAt(Strict):
+    """A decision of the operator, as a record of `hfsm-run --operator FILE`."""
+
+    t: Seconds = Field(
+        description="when it takes effect: at the start of the tick a span of t s from tick 0 ends in"
+    )
+    agent: Name | None = Field(default=None, description="the agent answered (accept, force)")
+    do: Literal["accept", "force", "autonomy", "pause", "resume", "step"]
+    event: str | None = Field(default=None, description="force: the event taken; accept: the event held")
+    level: Level | None = Field(default=None, description="autonomy: the run's new level")
+
+
 class TimeRange(Strict):
     min: Seconds | None = None
     max: Seconds | None = None
@@ -109,6 +124,15 @@ class Sent(Strict):
 
 
 SentItem = Name | Sent
+
+
+class Held(Strict):
+    """An arc held for the operator: the state that held it, its event, the level it needed, when."""
+
+    state: StatePath
+    event: str = Field(description="an event of the state, `join:TARGET`, or a message")
+    level: Level | None = None
+    at: Time | None = None
 
 
 class InOrderStates(Strict):
@@ -129,6 +153,7 @@ class AgentExpect(Strict):
         default=None, description="a list: exactly these, at their depths; in_order: a subsequence"
     )
     never: list[StatePath] | None = Field(default=None, description="states never entered")
+    held: list[Held] | None = Field(default=None, description="exactly these arcs were held, in order")
     sends: list[SentItem] | InOrderSends | None = Field(
         default=None, description="a list: exactly these messages; in_order: a subsequence"
     )
@@ -178,11 +203,27 @@ class Setup(Strict):
     scopes: list[ScopeIn] | None = Field(
         default=None, description="teams: each agent runs the machine under the scope that lists it"
     )
+    autonomy: Level | None = Field(default=None, description="the run's autonomy level (default full)")
+    operator: list[OperatorAt] | None = Field(default=None, description="the operator's decisions")
+
+
+class VerifyCase(Strict):
+    """Every run the world's choices allow (hfsm-verify), instead of one scripted run."""
+
+    loss: Annotated[int, Field(ge=0)] = Field(default=0, description="messages or notices a run may lose")
+    delay: Annotated[int, Field(ge=0)] = Field(default=0, description="ticks each may come late")
+    fail: Annotated[int, Field(ge=0)] = Field(default=0, description="agents that may fail, at any tick")
+    goal: Literal["success"] | None = Field(default=None, description="no agent that lives ends in a failure")
+    bound: Annotated[float, Field(gt=0, allow_inf_nan=False)] | None = Field(
+        default=None, description="run time explored (s); default: the top timer, else 600"
+    )
+    max_states: Annotated[int, Field(gt=0)] = Field(default=200_000, description="not proved past this")
 
 
 class Case(Setup):
     doc: str | None = None
-    expect: Expect
+    expect: Expect | None = Field(default=None, description="what the run does (or give `verify`)")
+    verify: VerifyCase | None = Field(default=None, description="prove the machine instead of one run")
 
 
 class TestFile(Setup):

@@ -1,4 +1,4 @@
-"""Names resolved where their file lies (SPEC sections 1 and 10): a user's machine shadows a library
+"""Names resolved where their file lies (docs/REFERENCE.md#a-machine and #hfsm-run): a user's machine shadows a library
 machine or a primitive for user files only; library files never look in user folders."""
 
 from __future__ import annotations

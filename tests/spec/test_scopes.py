@@ -1,4 +1,4 @@
-"""Scopes (SPEC 16) through `hfsm-run --world none --json --trace`: pairs running one handshake in
+"""Scopes (docs/REFERENCE.md#scopes) through `hfsm-run --world none --json --trace`: pairs running one handshake in
 one run, nested scopes, the mailbox under scopes, `on:` arcs, `to: all`, and run-time errors."""
 
 from __future__ import annotations

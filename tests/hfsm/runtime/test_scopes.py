@@ -1,4 +1,4 @@
-"""Scopes at run time (SPEC 16): what primitives and parallel regions see under a scope, where
+"""Scopes at run time (docs/REFERENCE.md#scopes): what primitives and parallel regions see under a scope, where
 `scope.*` reads which scope, and a property: pairs of any size never hear each other."""
 
 from __future__ import annotations
