@@ -120,8 +120,9 @@ def _is_record(record: object) -> bool:
     if not isinstance(record, dict):
         return False
     path, t, agent = record.get("path"), record.get("t", 0.0), record.get("agent", "")
+    named = agent is None or isinstance(agent, str)
     return (isinstance(path, list) and all(isinstance(p, str) for p in path)
-            and isinstance(t, int | float) and not isinstance(t, bool) and (agent is None or isinstance(agent, str)))
+            and isinstance(t, int | float) and not isinstance(t, bool) and named)
 
 
 def top_name(records: list[dict[str, Any]], path: Path) -> str:
