@@ -53,7 +53,7 @@ def findings(model: type[BaseModel], doc: Document, errors: list[ErrorDetails]) 
         seen.add((path, is_key, named))
         message = _message(model, path, err)
         meant = swaps.get(path[:-1]) if err["type"] == "extra_forbidden" else None
-        if meant is not None and "did you mean" not in message:
+        if meant is not None and meant != path[-1] and "did you mean" not in message:
             message = f"unknown key '{path[-1]}'; did you mean '{meant}'?"
         out.append(doc.finding(path, "E200", message, key=is_key))
     return out
@@ -80,8 +80,9 @@ def _misspelt(model: type[BaseModel], doc: Document, errors: list[ErrorDetails])
     """The mappings holding an unknown key that is close to a key they may have."""
     found: set[Path_] = set()
     for err in errors:
+        key = str(err["loc"][-1])
         if err["type"] == "extra_forbidden" and did_you_mean(
-            str(err["loc"][-1]), _keys_near(model, err["loc"])
+            key, [k for k in _keys_near(model, err["loc"]) if k != key]
         ):
             found.add(data_path(doc.data, err["loc"][:-1])[0])
     return found
@@ -142,7 +143,7 @@ def _message(model: type[BaseModel], path: Path_, err: ErrorDetails) -> str:
         if last in _CALL_ONLY and "parallel-state" in err["loc"]:
             return (f"a parallel state has no {where}: its regions call behaviours "
                     "(docs/REFERENCE.md#parallel-states)")
-        hint = did_you_mean(str(last), _keys_near(model, err["loc"]))
+        hint = did_you_mean(str(last), [k for k in _keys_near(model, err["loc"]) if k != last])
         return f"unknown key {where}" + (hint or f" (allowed: {', '.join(allowed)})")
     if kind == "missing":
         return f"missing required key '{err['loc'][-1]}'"

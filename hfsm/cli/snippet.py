@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import TextIO
 
 from hfsm.errors import Finding, Severity
-from hfsm.spans import span
+from hfsm.spans import finding_span
 
 _RED, _YELLOW, _BLUE, _BOLD, _RESET = "\x1b[31m", "\x1b[33m", "\x1b[34m", "\x1b[1m", "\x1b[0m"
 TAB = "    "
@@ -59,8 +59,9 @@ def render(finding: Finding, source: list[str] | None, *, colour: bool = False) 
     if source is None or not 0 < finding.line <= len(source):
         return head
     raw = source[finding.line - 1]
+    start, end = finding_span(raw, finding)
+    raw, start, end = _window(raw, start, end)
     text = raw.replace("\t", TAB)
-    start, end = span(raw, finding.col)
     before, under = raw[: start - 1], raw[start - 1 : end - 1]
     number = str(finding.line)
     gutter = " " * len(number)
@@ -69,6 +70,21 @@ def render(finding: Finding, source: list[str] | None, *, colour: bool = False) 
     return "\n".join(
         [head, f"{gutter} {bar}", f"{paint(_BLUE, number)} {bar} {text}".rstrip(), f"{gutter} {bar} {carets}"]
     )
+
+
+SHOWN = 160  # characters of a long source line shown around the caret
+
+
+def _window(raw: str, start: int, end: int) -> tuple[str, int, int]:
+    """A line longer than SHOWN cut around the span, `…` where it is cut; the span's 1-based
+    [start, end) columns in what is shown."""
+    if len(raw) <= SHOWN:
+        return raw, start, end
+    first = max(0, min(start - 1 - SHOWN // 4, len(raw) - SHOWN))
+    lead = "…" if first else ""
+    tail = "…" if first + SHOWN < len(raw) else ""
+    shown = lead + raw[first : first + SHOWN] + tail
+    return shown, start - first + len(lead), min(end - first, SHOWN + 1) + len(lead)
 
 
 def _width(text: str) -> int:
