@@ -94,13 +94,12 @@ def check_files(
     registry = registry if registry is not None else Registry()
     library = Library.for_file(paths[0], libs, registry, texts)
     for extra in paths[1:]:
-        if extra.resolve().parent not in library.search:
-            library.search.insert(1, extra.resolve().parent)
+        library.add_user_folder(extra.resolve().parent)
     roots = library.load(paths)
     inputs = None
     if world_inputs is not None:
         inputs = world_inputs.get(world_of(library.machines, registry, world), NO_INPUTS)
     docs = {m.doc.file: m.doc for m in library.machines.values()}
-    removed = {library.machines[n].doc.file: paths for n, paths in library.removed.items()}
+    removed = dict(library.removed)
     findings = salvage.consequences(run_checks(library.machines, registry, inputs), docs, removed)
     return library, roots, sorted(set(library.findings + findings))

@@ -143,7 +143,7 @@ def _message(model: type[BaseModel], path: Path_, err: ErrorDetails) -> str:
         if last in _CALL_ONLY and "parallel-state" in err["loc"]:
             return (f"a parallel state has no {where}: its regions call behaviours "
                     "(docs/REFERENCE.md#parallel-states)")
-        hint = did_you_mean(str(last), [k for k in _keys_near(model, err["loc"]) if k != last])
+        hint = did_you_mean(str(last), [k for k in _keys_near(model, err["loc"]) if k != str(last)])
         return f"unknown key {where}" + (hint or f" (allowed: {', '.join(allowed)})")
     if kind == "missing":
         return f"missing required key '{err['loc'][-1]}'"

@@ -68,6 +68,13 @@ class Retry(Strict):
     delay: Delay = Field(default=0, description="seconds between an end and the next call")
 
 
+class ScopeSpec(Strict):
+    """A team within the team for what the state runs: a private radio with these agents."""
+
+    name: str = Field(description="a name, or an expression giving one; qualified inside an outer scope")
+    agents: list[Any] | str = Field(description="agent ids of the enclosing scope, or an expression of them")
+
+
 class CallState(Strict):
     do: Name = Field(description="a built-in, a primitive or another machine")
     with_: dict[str, Any] = Field(default_factory=dict, alias="with")
@@ -76,6 +83,10 @@ class CallState(Strict):
     on: dict[Name, Name] = Field(default_factory=dict, description="event -> state or outcome")
     watch: list[Watch] = Field(default_factory=list)
     retry: Retry | None = None
+    scope: ScopeSpec | None = None
+    autonomy: dict[str, str] = Field(
+        default_factory=dict, description="event -> level (off, low, high, full) below which its arc is held"
+    )
     doc: str | None = None
 
 
@@ -118,6 +129,10 @@ class ParallelState(Strict):
     timer: Timer | None = None
     on: dict[Name, Name] = Field(default_factory=dict, description="event -> state or outcome")
     watch: list[Watch] = Field(default_factory=list)
+    scope: ScopeSpec | None = None
+    autonomy: dict[str, str] = Field(
+        default_factory=dict, description="event or join:TARGET -> level below which its arc is held"
+    )
     doc: str | None = None
 
 

@@ -81,6 +81,11 @@ class Context(Protocol):
 
     def send(self, message: str, to: str = "others", **data: Any) -> None: ...
 
+    @property
+    def scope(self) -> str:
+        """The qualified name of the scope the primitive runs under (REFERENCE.md#scopes; '' outside every
+        scope): its messages' names are qualified by it, in `send` and in `receive`."""
+
 
 PrimitiveFn = Callable[..., "str | Outcome"]
 

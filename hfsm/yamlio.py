@@ -151,9 +151,9 @@ def parse_text(text: str, file: str, *, kept: list[Finding] | None = None) -> Do
     return doc
 
 
-_FLOW = re.compile(  # strings as runs of plain characters: a repeated group costs memory per character
-    r"(?<![^\s\[{,:])'[^']*(?:''[^']*)*'"  # a single-quoted string
-    r'|(?<![^\s\[{,:])"[^"\\]*(?:\\.[^"\\]*)*"'  # a double-quoted one
+_FLOW = re.compile(
+    r"(?<![^\s\[{,:])'[^']*+(?:''[^']*+)*+'"  # a single-quoted string (loops unrolled: a long one
+    r'|(?<![^\s\[{,:])"[^"\\]*+(?:\\.[^"\\]*+)*+"'  # costs no backtracking), a double-quoted one
     r"|(?<!\S)#[^\n]*|[\[\]{}]"  # a comment, or a bracket
 )
 

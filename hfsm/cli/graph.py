@@ -164,7 +164,7 @@ def _read_trace(path: Path) -> list[dict[str, object]]:
             raise UsageError(f"--trace {path}:{line}: not a trace record of hfsm-run --trace")
     if not records:
         raise UsageError(f"--trace {path}: the trace has no records")
-    return records
+    return [r for r in records if r["agent"] is not None]  # the run's own (its flags, the operator's)
 
 
 def _is_record(record: object) -> bool:
@@ -177,7 +177,7 @@ def _is_record(record: object) -> bool:
         and isinstance(t, int | float)
         and not isinstance(t, bool)
         and isinstance(record.get("kind"), str)
-        and isinstance(record.get("agent"), str)
+        and (isinstance(record.get("agent"), str) or record.get("agent") is None)
     )
 
 

@@ -10,11 +10,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from hfsm import plugins
-from hfsm.cli import guard, report
+from hfsm.autonomy import Decision, level_of
+from hfsm.cli import guard, operating, report, resume
 from hfsm.cli.fail import check_failures, fail_arg
 from hfsm.cli.history import top_params
 from hfsm.cli.named import machine_path
 from hfsm.cli.newplugin import new_plugin, schema_hint
+from hfsm.cli.operator_file import read_decisions
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import UsageError, UserError
 from hfsm.load import Loaded, load, worlds_needed
@@ -58,6 +60,7 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     p.add_argument("--max-time", type=guard.MAX_TIME, default=3600.0, metavar="S", help="default 3600")
     p.add_argument("--trace", type=Path, metavar="FILE.jsonl", help="write the trace, as the run goes")
     p.add_argument("--json", action="store_true", help="print one JSON object on stdout")
+    p.add_argument("--replay", type=Path, metavar="CE.jsonl", help="run a counterexample of hfsm-verify")
     p.add_argument("--check", action="store_true", help="validate and exit")
     p.add_argument("--strict", action="store_true", help="warnings are errors")
     p.add_argument("--schema", action="store_true", help="print the JSON Schema of machine files")
@@ -78,6 +81,7 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
         metavar="AGENT@S",
         help="fail that agent S seconds into the run (repeatable)",
     )
+    operating.add_arguments(p)
     for factory in factories.values():
         factory.add_arguments(p.add_argument_group(f"--world {factory.name}"))
     live.add_arguments(p)
@@ -87,11 +91,13 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None) -> int:
     factories = _factories()
     try:
-        args = build_parser(factories).parse_args(argv)
+        parser = build_parser(factories)
+        args = parser.parse_args(argv)
     except SystemExit as exit_:  # a bad flag (2, usage printed) or --help (0): a code, for callers in process
         return exit_.code if isinstance(exit_.code, int) else 2
     logging.basicConfig(level=logging.INFO, format="%(message)s", stream=sys.stderr)
     try:
+        resume.prepare(args, parser, sys.argv[1:] if argv is None else argv)
         with guard.signals_raise():
             return _main(args, factories)
     except (UserError, UsageError) as err:
@@ -134,10 +140,11 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         registry=registry,
         strict=args.strict,
         world=args.world,
-        world_inputs=inputs,
+        world_inputs=None if args.replay else inputs,  # a replay's inputs are its schedule's
     )
     report.findings(loaded.warnings)
     top = loaded.roots[0]
+    args.edited = resume.edited(args.resumed, loaded) if args.resumed else []
     if args.check:
         if args.param or args.history:  # the params given are checked too
             top_params(args.param, args.history, top, registry)
@@ -148,18 +155,25 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
                 check(args)
         print(f"{args.file}: ok ({len(loaded.machines)} machines checked)", file=sys.stderr)
         return 0
+    if args.replay:
+        from hfsm.cli.replay import replayed
+
+        return replayed(args, loaded, registry)
     params = top_params(args.param, args.history, top, registry)
     world = _world(args, loaded, registry, factories)
     started = False
     try:
         agents = _agents(args, world)
         check_failures(args.fail, agents)
+        decisions = read_decisions(args.operator, agents) if args.operator else []
+        if args.resumed:  # the trace's decisions up to T, then the script's after it
+            decisions = args.resumed.decisions + [d for d in decisions if d.t > args.resumed.at]
         trace_path = args.trace or world.default_trace
         outputs = [("--trace", trace_path)] if trace_path else []
         outputs += [("--video", Path(p)) for p in getattr(world, "outputs", ())]
         guard.check_outputs(outputs, _inputs(args, loaded))
         started = True
-        return _run(args, loaded, registry, world, params, agents, trace_path)
+        return _run(args, loaded, registry, world, params, agents, trace_path, decisions)
     finally:
         files = guard.close_world(world)
         for path in files if started else ():
@@ -224,20 +238,27 @@ def _run(
     params: dict[str, object],
     agents: list[str],
     trace_path: Path | None,
+    decisions: list[Decision],
 ) -> int:
     from hfsm.cli.stop import stoppable  # not needed to check: loaded only to run
     from hfsm.cli.tracefile import TraceFile
     from hfsm.runtime.program import Program
     from hfsm.runtime.run import RunOptions, run
 
-    options = RunOptions(loaded.roots[0].name, agents, params, args.seed, args.max_time, args.fail)
+    options = RunOptions(loaded.roots[0].name, agents, params, args.seed, args.max_time, args.fail,
+                         autonomy=level_of(args.autonomy), decisions=decisions, breaks=args.breaks)
+    args.agent_names = agents
     program = Program(loaded.machines, registry, args.dt)
     trace = TraceFile(trace_path) if trace_path else None
-    sink, monitor = live.sinks(args, trace, loaded, registry, loaded.roots[0].name, world)
+    checked = resume.begin(trace, args, loaded, program.dt)
+    sink, monitor = live.sinks(args, checked, loaded, registry, loaded.roots[0].name, world)
+    if monitor is not None and monitor.control is not None:
+        options.live = monitor.control.queue
     stop = guard.StopFlag()
     try:
         with guard.signals_flag(stop):
             result = run(program, stoppable(world, stop), options, sink)
+        resume.end(checked, result)
     finally:
         if sink:
             sink.close()

@@ -12,12 +12,14 @@ terminal, and never when NO_COLOR is set (https://no-color.org).
 from __future__ import annotations
 
 import os
+import stat
 from collections.abc import Callable
 from pathlib import Path
 from typing import TextIO
 
 from hfsm.errors import Finding, Severity
 from hfsm.spans import finding_span
+from hfsm.yamlio import MAX_BYTES
 
 _RED, _YELLOW, _BLUE, _BOLD, _RESET = "\x1b[31m", "\x1b[33m", "\x1b[34m", "\x1b[1m", "\x1b[0m"
 TAB = "    "
@@ -38,13 +40,21 @@ def file_lines() -> Source:
 
     def lines(file: str) -> list[str] | None:
         if file not in cache:
-            try:
-                cache[file] = Path(file).read_text(encoding="utf-8").splitlines()
-            except (OSError, UnicodeDecodeError):
-                cache[file] = None
+            cache[file] = _read(Path(file))
         return cache[file]
 
     return lines
+
+
+def _read(path: Path) -> list[str] | None:
+    """A regular file's lines, never blocking on a FIFO or a device, nor reading a huge file."""
+    try:
+        info = path.stat()
+        if not stat.S_ISREG(info.st_mode) or info.st_size > MAX_BYTES:
+            return None
+        return path.read_text(encoding="utf-8").splitlines()
+    except (OSError, UnicodeDecodeError):
+        return None
 
 
 def render(finding: Finding, source: list[str] | None, *, colour: bool = False) -> str:
@@ -72,19 +82,20 @@ def render(finding: Finding, source: list[str] | None, *, colour: bool = False) 
     )
 
 
-SHOWN = 160  # characters of a long source line shown around the caret
+WIDE = 100  # characters of a source line shown around the span; a longer line is cut with '…'
 
 
 def _window(raw: str, start: int, end: int) -> tuple[str, int, int]:
-    """A line longer than SHOWN cut around the span, `…` where it is cut; the span's 1-based
-    [start, end) columns in what is shown."""
-    if len(raw) <= SHOWN:
+    """The part of a long line around the span (columns from 1, `end` just after it)."""
+    if len(raw) <= WIDE:
         return raw, start, end
-    first = max(0, min(start - 1 - SHOWN // 4, len(raw) - SHOWN))
-    lead = "…" if first else ""
-    tail = "…" if first + SHOWN < len(raw) else ""
-    shown = lead + raw[first : first + SHOWN] + tail
-    return shown, start - first + len(lead), min(end - first, SHOWN + 1) + len(lead)
+    first = max(0, start - 1 - WIDE // 3)
+    last = min(len(raw), first + WIDE)
+    head = "…" if first > 0 else ""
+    tail = "…" if last < len(raw) else ""
+    start = start - first + len(head)
+    end = min(end, last + 1) - first + len(head)
+    return head + raw[first:last] + tail, start, max(end, start + 1)
 
 
 def _width(text: str) -> int:

@@ -75,6 +75,21 @@ def call(do: str, args: Mapping[str, Any]) -> tuple[str, ...]:
     return tuple(lines)
 
 
+_LEADING_TEXT = re.compile(r"""^\s*(['"])([a-z0-9_]*)\1\s*\+""")
+
+
+def scope(name: str) -> str:
+    """A state's `scope:` as its label line (REFERENCE.md#scopes): `scope: pair` for a literal name; for an
+    expression that starts with a literal, that literal and an ellipsis (`scope: pair_…`)."""
+    found = _WHOLE_EXPR.match(name.strip())
+    if found is None:
+        return f"scope: {name}"
+    leading = _LEADING_TEXT.match(found.group(1))
+    if leading is not None:
+        return f"scope: {leading.group(2)}{ELLIPSIS}"
+    return f"scope: {shorten(found.group(1).strip(), VALUE_WIDTH)}"
+
+
 def timer(t: float | str, params: Mapping[str, Param] | None = None) -> str:
     """A timer's duration: `30 s`, or its expression with its value from the params' defaults."""
     return duration(t, params, " s")

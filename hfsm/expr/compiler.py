@@ -68,7 +68,7 @@ class _Compiler:
                 hint = f"; did you mean '{close[0]}.{short(node.attr)}'?" if close else ""
             raise ExprSyntaxError(
                 f"'{_snippet(node)}': no attribute access but params.X, vars.X, in.X, agent.id, "
-                f"state.time, state.attempt and machine.time{hint}"
+                f"state.time, state.attempt, machine.time, scope.name and scope.agents{hint}"
             )
         root, attr = node.value.id, node.attr
         self.names.check(root, attr)
@@ -82,6 +82,8 @@ class _Compiler:
             return lambda s: s.live.input(attr)
         if root == "machine":
             return lambda s: s.live.machine_time()
+        if root == "scope":
+            return (lambda s: s.live.scope_name()) if attr == "name" else (lambda s: s.live.scope_agents())
         if attr == "time":
             return lambda s: s.live.state_time()
         return lambda s: s.live.state_attempt()

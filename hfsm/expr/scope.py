@@ -44,6 +44,10 @@ class Live(Protocol):
 
     def input(self, name: str) -> Any: ...
 
+    def scope_name(self) -> str: ...
+
+    def scope_agents(self) -> list[str]: ...
+
 
 class _Nowhere:
     """The live values of a scope outside any running state: reading one is a run-time error."""
@@ -60,6 +64,12 @@ class _Nowhere:
     def input(self, name: str) -> Any:
         raise ExprValueError(f"'in.{name}' cannot be read here")
 
+    def scope_name(self) -> str:
+        raise ExprValueError("'scope.name' cannot be read here")
+
+    def scope_agents(self) -> list[str]:
+        raise ExprValueError("'scope.agents' cannot be read here")
+
 
 NOWHERE: Live = _Nowhere()
 
@@ -75,9 +85,9 @@ class Scope:
 Fn = Callable[[Scope], Any]
 
 IN = "__in__"  # what `in.x` reads as once tokenized: `in` is a Python keyword
-ROOTS = ("params", "vars", "agent", "state", "machine", IN)
-LIVE = {"state": ("time", "attempt"), "machine": ("time",)}
-BARE_NAMES = ("true", "false", "null", "params", "vars", "agent", "state", "machine")
+ROOTS = ("params", "vars", "agent", "state", "machine", "scope", IN)
+LIVE = {"state": ("time", "attempt"), "machine": ("time",), "scope": ("name", "agents")}
+BARE_NAMES = ("true", "false", "null", "params", "vars", "agent", "state", "machine", "scope")
 
 
 @dataclass(frozen=True)

@@ -13,6 +13,8 @@ from typing import TYPE_CHECKING, Any, Protocol
 from hfsm.names import did_you_mean
 from hfsm.primitive import Message
 from hfsm.runtime.agent import Agent, Event, Frame, Region
+from hfsm.runtime.scopes import members as members_in
+from hfsm.runtime.scopes import radio_at
 from hfsm.world import NOTICE
 
 if TYPE_CHECKING:
@@ -148,11 +150,22 @@ def start_barrier(
 ) -> Barrier | Event:
     name, named, at_least = params["name"], params["agents"], params["at_least"]
     team = host.team
+    radio = radio_at(where)
+    if not radio.top:  # docs/REFERENCE.md#scopes: the scope's agents, and the name qualified by the scope
+        chosen = members_in(radio, agent.name, named)
+        if isinstance(chosen, str):
+            return Event("error", error=f"barrier '{name}': {chosen}")
+        if at_least < 0 or at_least > len(chosen):
+            count = len(chosen)
+            problem = f"at_least is {at_least}, but it names {count} agent{'s' * (count != 1)}"
+            return Event("error", error=f"barrier '{name}': {problem}")
+        qualified = radio.qualify(name)
+        return Barrier(team, agent.name, qualified, chosen, at_least or len(chosen), host.tick)
     problem = _problem(list(team.order), agent.name, named, at_least)
     if problem:
         return Event("error", error=f"barrier '{name}': {problem}")
-    chosen = set(named) if named else {a for a in team.order if a != agent.name}
-    members = sorted(chosen, key=team.order.__getitem__)
+    chosen_all = set(named) if named else {a for a in team.order if a != agent.name}
+    members = sorted(chosen_all, key=team.order.__getitem__)
     return Barrier(team, agent.name, name, members, at_least or len(members), host.tick)
 
 

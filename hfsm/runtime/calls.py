@@ -32,10 +32,13 @@ class Calls(Cancelling):
         return float(seconds)
 
     def _params(self, callee: Callee, frame: Frame) -> dict[str, Any] | Event:
+        frame.in_with = True  # `scope.*` in a `with` reads the state's own scope (docs/REFERENCE.md#scopes)
         try:
             given = {k: v.fn(frame.scope) for k, v in callee.with_.items()}
         except ExprValueError as exc:
             return Event("error", error=str(exc))
+        finally:
+            frame.in_with = False
         params = resolve_params(callee.spec, given)  # type: ignore[arg-type]
         return Event("error", error=params) if isinstance(params, str) else params
 
@@ -65,8 +68,12 @@ class Calls(Cancelling):
                 where.below = None
             return ended
         if kind == "primitive":
-            ctx = RunContext(self, agent, callee.do, where)
-            activity: Any = PrimitiveActivity(callee.callee, ctx, params, where)  # type: ignore[arg-type]
+            starts = getattr(callee.callee, "start_activity", None)  # a stand-in of hfsm-verify
+            if starts is not None:
+                activity: Any = starts(self, agent, params, where)
+            else:
+                ctx = RunContext(self, agent, callee.do, where)
+                activity = PrimitiveActivity(callee.callee, ctx, params, where)  # type: ignore[arg-type]
         else:
             activity = STARTERS[kind](self, agent, frame, params, where)  # type: ignore[arg-type]
             if activity.__class__ is Event:

@@ -9,10 +9,12 @@ from __future__ import annotations
 
 from typing import Any
 
+from hfsm.autonomy import FULL
 from hfsm.runtime.agent import Agent, AgentResult, Event, Frame, Region
 from hfsm.runtime.barrier import Team
 from hfsm.runtime.program import span_ticks
 from hfsm.runtime.records import records_for
+from hfsm.runtime.scopes import Radio
 from hfsm.runtime.states import RState
 from hfsm.trace import TraceSink
 from hfsm.world import World
@@ -36,6 +38,8 @@ class Core:
         for agent in agents:
             agent.clock = self
         self.by_name = {a.name: a for a in agents}
+        for agent in agents:
+            agent.radio = Radio("", tuple(a.name for a in agents if a is not agent), top=True)
         self.world: World = world
         self.dt = dt
         self.trace = trace
@@ -46,6 +50,9 @@ class Core:
         self.spans: dict[float, int] = {}  # seconds -> ticks, for spans seen before
         self.team = Team(self)  # barriers (docs/REFERENCE.md#barriers)
         self.wake = False  # vars changed after a state's watches were tried: its next tick is due
+        self.level = FULL  # the run's autonomy level
+        self.approved: Event | None = None  # the event the operator answered: taken, not held again
+        self.breaks: Any = None  # the breakpoints' sink (runtime.breaks.Breaks), when there are any
 
     @property
     def time(self) -> float:
@@ -109,6 +116,12 @@ class Core:
         raise NotImplementedError
 
     def _enter(self, frame: Frame, state: RState) -> Event | None:
+        raise NotImplementedError
+
+    def _held(self, frame: Frame, state: RState, event: Event) -> bool:
+        raise NotImplementedError
+
+    def _message_held(self, frame: Frame, state: RState) -> bool:
         raise NotImplementedError
 
     def _start_regions(self, frame: Frame) -> Event | None:

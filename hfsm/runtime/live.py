@@ -72,3 +72,11 @@ class FrameLive:
 
     def input(self, name: str) -> Any:
         return self.inputs.read(name, self.clock.tick)
+
+    def scope_name(self) -> str:
+        frame = self.frame
+        return str((frame.inner if frame.in_with else frame.radio).name)
+
+    def scope_agents(self) -> list[str]:
+        frame = self.frame
+        return list((frame.inner if frame.in_with else frame.radio).agents)

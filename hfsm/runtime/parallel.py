@@ -41,10 +41,10 @@ class Parallel(Arcs):
                     self._region_ended(region, event)
             if region.result is not None:
                 ended = True
-                if region.result.name == "error":
+                if region.result.name == "error" and frame.held is None:
                     self._settle(frame, self._region_failed(frame, region.result))
                     return
-        if ended:
+        if ended and frame.held is None:
             event = self._join(frame, regions)
             if event is not None:
                 self._settle(frame, event)

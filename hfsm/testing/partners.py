@@ -25,6 +25,8 @@ class ScriptedPartners:
         counts: dict[tuple[str, str], int] = {}
         self._arrivals: list[tuple[int, str, str, int]] = []
         for p in sorted(partners, key=lambda p: p.at):
+            if p.barrier is None:
+                continue  # a team mate a scope or a barrier may name, that never arrives anywhere
             counts[p.agent, p.barrier] = counts.get((p.agent, p.barrier), 0) + 1
             self._arrivals.append((span_ticks(p.at, dt), p.agent, p.barrier, counts[p.agent, p.barrier]))
         self._last = counts

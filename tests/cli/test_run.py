@@ -115,7 +115,7 @@ def test_max_time_and_trace(machine: Machine, capsys: pytest.CaptureFixture[str]
     code, out, _ = run(capsys, path, "--max-time", "1", "--json", "--trace", trace)
     assert code == 1 and json.loads(out)["time"] == 1.0
     records = [json.loads(line) for line in trace.read_text().splitlines()]
-    assert [r["kind"] for r in records] == ["enter", "enter", "exit", "exit"]
+    assert [r["kind"] for r in records] == ["run", "enter", "enter", "exit", "exit"]
 
 
 def test_schema(capsys: pytest.CaptureFixture[str]) -> None:

@@ -1,4 +1,4 @@
-"""The names of SPEC 12 and 13 in expressions: `state.*`, `machine.time`, `in.x`."""
+"""The names of docs/REFERENCE.md#watches and #retries in expressions: `state.*`, `machine.time`, `in.x`."""
 
 from __future__ import annotations
 

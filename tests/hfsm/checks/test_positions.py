@@ -111,8 +111,8 @@ def test_check_knows_the_world_and_a_retry_count_is_positive(
     )
     code, lines = check(capsys, str(path), "--check", "--world", "none")
     message = "'times' must be a whole number > 0 or a '${…}' expression, not 0"
-    missing = "the run's world declares no input 'in.battery' (it declares: none)"
-    assert (code, lines) == (2, [f"{path}:5:21: error[E330]: {missing}", f"{path}:6:32: error[E200]: {message}"])
+    no_input = "error[E330]: the run's world declares no input 'in.battery' (it declares: none)"
+    assert (code, lines) == (2, [f"{path}:5:21: {no_input}", f"{path}:6:32: error[E200]: {message}"])
     path.write_text(path.read_text().replace("times: 0", "times: 2"))
     code, lines = check(capsys, str(path), "--check", "--world", "none")
     message = "the run's world declares no input 'in.battery' (it declares: none)"

@@ -1,4 +1,4 @@
-"""Checks of watches, retries, live names and inputs (SPEC 12, 13), and the warnings of language v2."""
+"""Checks of watches, retries, live names and inputs (docs/REFERENCE.md#watches and #retries), and the warnings of language v2."""
 
 from __future__ import annotations
 

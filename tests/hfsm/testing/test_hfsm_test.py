@@ -414,3 +414,58 @@ def test_machines_by_path_and_by_lib_and_picking_cases(
     assert "2 passed, 0 failed (2 cases in 1 files" in capsys.readouterr().err
     assert main([str(path), "-k", "path", "-v"]) == 0
     assert capsys.readouterr().out.endswith("nap.test.yaml::by_path\n")
+
+
+def test_messages_scripted_and_expected_under_a_scope(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    write(
+        tmp_path,
+        "ask.yaml",
+        """
+        outcomes: [answered]
+        vars: {said: ""}
+        outputs: {said: "${vars.said}"}
+        states:
+          ask: {do: send, with: {message: question}, on: {sent: hear}}
+          hear: {do: wait_for, with: {message: answer}, save: {said: text}, on: {received: answered}}
+        """,
+    )
+    write(
+        tmp_path,
+        "pair_up.yaml",
+        """
+        outcomes: [done]
+        vars: {said: ""}
+        outputs: {said: "${vars.said}"}
+        states:
+          talk:
+            do: ask
+            scope: {name: pair, agents: []}
+            save: {said: said}
+            on: {answered: done}
+        """,
+    )
+    path = write(
+        tmp_path,
+        "pair_up.test.yaml",
+        """
+        machine: pair_up
+        agents: [a]
+        tests:
+          scoped:
+            messages:
+              - {at: 0.1, from: b, message: answer, data: {text: plain}}
+              - {at: 0.5, from: b, scope: pair, message: answer, data: {text: scoped}}
+            expect:
+              outcome: done
+              time: 0.5
+              outputs: {said: scoped}
+              sends: [{message: question, scope: pair, to: others}]
+          unscoped_expectation_fails:
+            messages: [{at: 0.5, from: b, scope: pair, message: answer, data: {text: scoped}}]
+            expect: {sends: [question]}
+        """,
+    )
+    code, out, err = hfsm_test(capsys, path)
+    assert code == 1
+    assert "1 passed, 1 failed" in err
+    assert "expected message 1 sent to be question, got pair/question to others" in out

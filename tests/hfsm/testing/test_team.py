@@ -1,5 +1,5 @@
 """`hfsm-test`'s team settings: params for one agent (`agent_params`), and scripted partners that
-meet the agents at barriers (`partners`, SPEC 14)."""
+meet the agents at barriers (`partners`, docs/REFERENCE.md#barriers)."""
 
 from __future__ import annotations
 
