@@ -90,12 +90,17 @@ def test_figures_stay_when_the_run_has_ended(page: Any, plain: Server) -> None:
 
 
 def _in_view(page: Any, selector: str) -> bool:
-    return bool(page.evaluate(
-        f"""(() => {{ const r = document.querySelector({selector!r}).getBoundingClientRect();
-        return r.bottom > 0 && r.top < window.innerHeight; }})()"""))
+    return bool(
+        page.evaluate(
+            f"""(() => {{ const r = document.querySelector({selector!r}).getBoundingClientRect();
+        return r.bottom > 0 && r.top < window.innerHeight; }})()"""
+        )
+    )
 
 
-def test_the_breadcrumb_shows_the_active_path_and_scrolls_to_the_deepest_state(page: Any, plain: Server) -> None:
+def test_the_breadcrumb_shows_the_active_path_and_scrolls_to_the_deepest_state(
+    page: Any, plain: Server
+) -> None:
     page.set_viewport_size({"width": 1400, "height": 200})
     _open(page, plain.url)
     page.evaluate("window.hfsm.seek(0.05)")
@@ -142,7 +147,9 @@ def test_keys_play_pause_and_step_the_replay(page: Any, plain: Server) -> None:
     assert not page.evaluate("window.hfsm.page.playing")
     assert float(page.inner_text("#time").split()[0]) >= float(at.split()[0])
     page.fill("#search", "a b")  # keys typed in a field stay there
-    assert float(page.inner_text("#time").split()[0]) >= float(at.split()[0]) and not page.evaluate("window.hfsm.page.playing")
+    assert float(page.inner_text("#time").split()[0]) >= float(at.split()[0]) and not page.evaluate(
+        "window.hfsm.page.playing"
+    )
 
 
 def test_b_toggles_a_breakpoint_on_the_selected_state_of_a_live_run(page: Any, tmp_path: Path) -> None:
@@ -163,7 +170,9 @@ def test_b_toggles_a_breakpoint_on_the_selected_state_of_a_live_run(page: Any, t
         node.click()
         assert page.inner_text("#selected") == "selected: listen"
         page.keyboard.press("b")
-        page.wait_for_function("document.getElementById('op-breaks').textContent === 'breakpoints: enter:listen'")
+        page.wait_for_function(
+            "document.getElementById('op-breaks').textContent === 'breakpoints: enter:listen'"
+        )
         page.keyboard.press("b")
         page.wait_for_function("document.getElementById('op-breaks').textContent === ''")
     finally:
@@ -174,7 +183,14 @@ def test_b_toggles_a_breakpoint_on_the_selected_state_of_a_live_run(page: Any, t
 def test_marks_on_the_timeline_and_jumps_between_them(page: Any, tmp_path: Path) -> None:
     extra = [
         {"t": 0.0, "kind": "operator", "do": "pause"},
-        {"t": 0.15, "kind": "held", "agent": "a", "path": ["ping_pong", "receive"], "event": "<b>x</b>", "level": "high"},
+        {
+            "t": 0.15,
+            "kind": "held",
+            "agent": "a",
+            "path": ["ping_pong", "receive"],
+            "event": "<b>x</b>",
+            "level": "high",
+        },
         {"t": 0.15, "kind": "event", "agent": "b", "path": ["ping_pong", "receive"], "event": "timeout"},
     ]
     records = sorted([*_trace(tmp_path), *extra], key=lambda r: r["t"])
@@ -196,7 +212,7 @@ def test_marks_on_the_timeline_and_jumps_between_them(page: Any, tmp_path: Path)
         assert float(page.inner_text("#time").split()[0]) == pytest.approx(times[1])
         page.click("#prev-mark")
         assert page.inner_text("#time") == "0.00 s"
-        page.locator('#marks .mark.hold').dispatch_event('click')  # it lies under the timeout's mark
+        page.locator("#marks .mark.hold").dispatch_event("click")  # it lies under the timeout's mark
         assert page.inner_text("#time") == "0.15 s"
     finally:
         server.stop()
@@ -208,7 +224,9 @@ def test_a_figure_opens_full_size_and_zooms_and_pans(page: Any, plain: Server) -
     page.click('.agent[data-agent="a"] .drawing[data-machine="ping_pong"] button.enlarge')
     assert page.locator("#viewer").is_visible()
     assert page.inner_text("#viewer-title") == "a: ping_pong"
-    assert page.eval_on_selector_all("#viewer-figure g.node.active title", "ns => ns.map(n => n.textContent)") == ["receive"]
+    assert page.eval_on_selector_all(
+        "#viewer-figure g.node.active title", "ns => ns.map(n => n.textContent)"
+    ) == ["receive"]
     assert page.inner_text("#viewer-scale") == "100 %"
     box = page.locator("#viewer-stage").bounding_box()
     page.mouse.move(box["x"] + 100, box["y"] + 100)
