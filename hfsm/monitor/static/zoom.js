@@ -1,6 +1,6 @@
 "use strict";
 // Any figure full size in a viewer above the page: the wheel zooms about the pointer, a drag pans,
-// 0 fits it again, Escape closes. The viewer shows a copy of the figure, refreshed as time moves.
+// 0 fits it again (it opens fitted), Escape closes. The viewer shows a copy of the figure, refreshed as time moves.
 
 const zoom = { source: null, scale: 1, x: 0, y: 0, drag: null };
 
@@ -11,6 +11,15 @@ function openFigure(drawing) {
   $("viewer-title").textContent = `${agent ? agent.dataset.agent : ""}: ${block ? block.dataset.key : ""}`;
   $("viewer").hidden = false;
   refreshFigure();
+  fitFigure();
+}
+
+// The scale that shows the whole figure in the viewer, top left.
+function fitFigure() {
+  zoom.scale = 1; zoom.x = 0; zoom.y = 0; placeFigure();
+  const figure = $("viewer-figure").getBoundingClientRect(), stage = $("viewer-stage").getBoundingClientRect();
+  if (figure.width && figure.height) zoom.scale = Math.min(stage.width / figure.width, stage.height / figure.height);
+  placeFigure();
 }
 
 function closeFigure() { $("viewer").hidden = true; zoom.source = null; }
@@ -53,7 +62,7 @@ function setUpZoom() {
   });
   stage.addEventListener("pointerup", () => { zoom.drag = null; });
   $("viewer-close").onclick = closeFigure;
-  $("viewer-fit").onclick = () => { zoom.scale = 1; zoom.x = 0; zoom.y = 0; placeFigure(); };
+  $("viewer-fit").onclick = fitFigure;
   $("agents").addEventListener("click", event => {
     const button = event.target.closest("button.enlarge");
     if (button) openFigure(button.parentElement);
