@@ -53,7 +53,7 @@ def findings(model: type[BaseModel], doc: Document, errors: list[ErrorDetails]) 
         seen.add((path, is_key, named))
         message = _message(model, path, err)
         meant = swaps.get(path[:-1]) if err["type"] == "extra_forbidden" else None
-        if meant is not None and "did you mean" not in message:
+        if meant is not None and meant != path[-1] and "did you mean" not in message:
             message = f"unknown key '{path[-1]}'; did you mean '{meant}'?"
         out.append(doc.finding(path, "E200", message, key=is_key))
     return out
@@ -80,8 +80,9 @@ def _misspelt(model: type[BaseModel], doc: Document, errors: list[ErrorDetails])
     """The mappings holding an unknown key that is close to a key they may have."""
     found: set[Path_] = set()
     for err in errors:
+        key = str(err["loc"][-1])
         if err["type"] == "extra_forbidden" and did_you_mean(
-            str(err["loc"][-1]), _keys_near(model, err["loc"])
+            key, [k for k in _keys_near(model, err["loc"]) if k != key]
         ):
             found.add(data_path(doc.data, err["loc"][:-1])[0])
     return found

@@ -9,9 +9,20 @@ from __future__ import annotations
 
 import re
 
+from hfsm.errors import Finding
+
 _NAME = re.compile(r"[A-Za-z0-9_.]+")
 _FLOW_END = ",]}"
 _PAIRS = {"[": "]", "{": "}"}
+
+
+def finding_span(line: str, finding: Finding) -> tuple[int, int]:
+    """1-based [start, end) columns of a finding on its line: its own end when it knows one on the
+    same line (an expression's error, placed exactly), else what starts at its column."""
+    end = finding.end
+    if end is not None and end[0] == finding.line and end[1] > finding.col:
+        return span(line, finding.col, width=end[1] - finding.col)
+    return span(line, finding.col)
 
 
 def span(line: str, col: int, *, width: int = 0) -> tuple[int, int]:
@@ -27,6 +38,8 @@ def span(line: str, col: int, *, width: int = 0) -> tuple[int, int]:
         return start, _quoted(line, i) + 1
     if char in _PAIRS:
         return start, _bracketed(line, i) + 1
+    if line.startswith("${", i):
+        return start, _bracketed(line, i + 1) + 1  # the `${…}`, not the quote after it
     if _inside_expression(line, i) and _NAME.match(line, i):
         match = _NAME.match(line, i)
         assert match is not None

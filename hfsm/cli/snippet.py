@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import TextIO
 
 from hfsm.errors import Finding, Severity
-from hfsm.spans import span
+from hfsm.spans import finding_span
 from hfsm.yamlio import MAX_BYTES
 
 _RED, _YELLOW, _BLUE, _BOLD, _RESET = "\x1b[31m", "\x1b[33m", "\x1b[34m", "\x1b[1m", "\x1b[0m"
@@ -69,7 +69,7 @@ def render(finding: Finding, source: list[str] | None, *, colour: bool = False) 
     if source is None or not 0 < finding.line <= len(source):
         return head
     raw = source[finding.line - 1]
-    start, end = span(raw, finding.col)
+    start, end = finding_span(raw, finding)
     raw, start, end = _window(raw, start, end)
     text = raw.replace("\t", TAB)
     before, under = raw[: start - 1], raw[start - 1 : end - 1]

@@ -9,7 +9,7 @@ from pathlib import Path
 from lsprotocol import types as lsp
 
 from hfsm.errors import Finding, Severity
-from hfsm.spans import span
+from hfsm.spans import finding_span
 
 SOURCE = "hfsm"
 
@@ -18,7 +18,7 @@ def finding_range(finding: Finding, lines: Sequence[str]) -> lsp.Range:
     """The 0-based range of what the finding points at, in the document's `lines`."""
     line = max(0, finding.line - 1)
     text = lines[line] if line < len(lines) else ""
-    start, end = span(text, finding.col)
+    start, end = finding_span(text, finding)
     return lsp.Range(lsp.Position(line, start - 1), lsp.Position(line, end - 1))
 
 
