@@ -3,6 +3,7 @@ docs/REFERENCE.md#events-and-arcs, docs/REFERENCE.md#built-in-behaviours)."""
 
 from __future__ import annotations
 
+from hfsm.builtins import REGISTRY
 from hfsm.checks.context import CheckContext, call_states, parallel_states
 from hfsm.checks.forgotten import reads_like_expression, wrapped
 from hfsm.expr import ExprSyntaxError
@@ -79,13 +80,15 @@ def _check_params(
 def _check_message_name(
     ctx: CheckContext, mf: MachineFile, where: Where, state: CallState | Region, spec: BehaviourSpec
 ) -> None:
-    message = state.with_.get("message")
-    if spec.name not in ("send", "wait_for") or not isinstance(message, str) or _is_expr(message):
+    builtin = REGISTRY.get(spec.name) if spec.kind == "builtin" else None
+    param = builtin.message_param if builtin is not None else ""
+    message = state.with_.get(param) if param else None
+    if not isinstance(message, str) or _is_expr(message):
         return
     if not is_name(message):
-        ctx.error(mf, (*where, "with", "message"), "E201", f"bad message name '{message}'")
+        ctx.error(mf, (*where, "with", param), "E201", f"bad message name '{message}'")
     elif message in RESERVED_MESSAGES:
-        ctx.error(mf, (*where, "with", "message"), "E202", f"message name '{message}' is reserved")
+        ctx.error(mf, (*where, "with", param), "E202", f"message name '{message}' is reserved")
 
 
 def _check_events(

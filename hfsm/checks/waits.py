@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from hfsm.builtins import REGISTRY
 from hfsm.checks.context import CheckContext, parallel_states
 from hfsm.checks.graphs import endless_loops
 from hfsm.checks.timing import guarded, timed_state
@@ -37,21 +38,11 @@ def check_regions(ctx: CheckContext, mf: MachineFile) -> None:
                 ctx.warn(mf, at, "W403", text, key=True)
 
 
-def _literal(value: Any) -> str | None:
-    if isinstance(value, str) and "${" not in value:
-        return value
-    return None
-
-
 def blocks(ctx: CheckContext, do: str, with_: dict[str, Any]) -> str | None:
     """Why a call can wait without bound (None: it cannot, as far as the checks know)."""
-    if do == "wait" and "seconds" not in with_:
-        return "'wait' without seconds"
-    if do == "wait_for":
-        message = _literal(with_.get("message"))
-        return f"'wait_for' of message '{message}'" if message else "'wait_for'"
-    if do == "barrier":
-        return "'barrier'"
+    builtin = REGISTRY.get(do)
+    if builtin is not None:
+        return builtin.blocks(with_)
     if do in ctx.machines:
         return _machine_blocks(ctx, do)
     return None
@@ -88,10 +79,10 @@ def _awaited(state: ParallelState) -> list[tuple[str, dict[str, Any]]]:
 
 
 def consumes(ctx: CheckContext, do: str, with_: dict[str, Any]) -> frozenset[str]:
-    """The messages a call takes from the mailbox: by `wait_for`, or by an arc, at any depth."""
-    if do == "wait_for":
-        message = _literal(with_.get("message"))
-        return frozenset([message]) if message else frozenset()
+    """The messages a call takes from the mailbox: by a built-in (`wait_for`), or by an arc, at any depth."""
+    builtin = REGISTRY.get(do)
+    if builtin is not None:
+        return builtin.consumes(with_)
     if do not in ctx.machines:
         return frozenset()
     key = ("consumes", do)

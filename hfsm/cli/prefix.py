@@ -3,13 +3,23 @@
 from __future__ import annotations
 
 import json
-from typing import TYPE_CHECKING, Any
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
 
+from hfsm.autonomy import Decision
 from hfsm.runtime.core import FatalError
 from hfsm.runtime.program import span_ticks
 
-if TYPE_CHECKING:
-    from hfsm.cli.resume import Resume
+
+@dataclass
+class Resume:
+    path: Path
+    at: float  # T, seconds
+    head: dict[str, Any]
+    lines: list[str]  # the old trace's lines after its header, each without its newline
+    prefix: int  # how many of them are at or before T
+    decisions: list[Decision] = field(default_factory=list)
 
 
 class PrefixCheck:

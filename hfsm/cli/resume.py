@@ -16,12 +16,11 @@ import hashlib
 import json
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from hfsm.autonomy import Decision, decision_of
-from hfsm.cli.prefix import PrefixCheck
+from hfsm.cli.prefix import PrefixCheck, Resume
 from hfsm.errors import UsageError
 from hfsm.library import MachineFile
 from hfsm.load import Loaded
@@ -82,16 +81,6 @@ def header(top: str, settings: list[str], loaded: Loaded) -> dict[str, Any]:
         "args": settings,
         "machines": digest(loaded.machines),
     }
-
-
-@dataclass
-class Resume:
-    path: Path
-    at: float  # T, seconds
-    head: dict[str, Any]
-    lines: list[str]  # the old trace's lines after its header, each without its newline
-    prefix: int  # how many of them are at or before T
-    decisions: list[Decision] = field(default_factory=list)
 
 
 def read_resume(text: str, dt_of: Any) -> Resume:

@@ -11,6 +11,7 @@ from collections.abc import Callable, Collection, Mapping, Sequence
 from dataclasses import dataclass, field
 
 from hfsm.autonomy import LEVELS, join_key
+from hfsm.builtins import REGISTRY
 from hfsm.checks.context import CheckContext
 from hfsm.diagram import regions, text
 from hfsm.diagram.model import Cluster, Edge, Figure, Item, Node, Ref, Role, Style
@@ -27,7 +28,6 @@ ANY_NODE = "@any"
 WATCH_NODE = "@watch"
 BORDER = "cluster_@machine"  # the figure's own machine, when its watches leave from its border
 OVERVIEW = "call-graph"
-BARRIER = "barrier"
 _STYLE: dict[str, Style] = {
     "outcome": "success",
     "choice": "success",
@@ -59,6 +59,10 @@ class Builder:
     def __init__(self, src: Sources, links: Collection[str]) -> None:
         self.src = src
         self.links = links
+
+    @property
+    def machines(self) -> Mapping[str, Machine]:
+        return self.src.machines
 
     def part(self, name: str, rel: Ref, depth: int, border: str = "") -> Part:
         """`border`: the cluster this machine is drawn in (its watches leave from there)."""
@@ -130,7 +134,8 @@ class Builder:
         if spec is None or spec.kind == "primitive":
             return "primitive"
         if spec.kind == "builtin":
-            return "barrier" if do == BARRIER else "builtin"
+            builtin = REGISTRY.get(do)
+            return builtin.role if builtin is not None else "builtin"
         return "machine"
 
     @staticmethod

@@ -6,9 +6,12 @@ state the region's name comes next ('search/detect/look'), as in trace paths.
 
 from __future__ import annotations
 
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass
+from typing import Protocol
 
-from hfsm.diagram.model import Edge, Item, Ref
+from hfsm.diagram.model import Edge, Item, Ref, Role
+from hfsm.model import Machine
 
 
 def node_id(rel: Ref, leaf: str = "") -> str:
@@ -33,3 +36,18 @@ class Part:
     entry: str
     lhead: str = ""
     rows: tuple[tuple[str, ...], ...] = ()
+
+
+class Drawer(Protocol):
+    """What regions.py asks of the figure's builder (extract.Builder): the machines it may draw inline,
+    the callees that get a link, a callee's role, and a machine drawn at a place."""
+
+    @property
+    def links(self) -> Collection[str]: ...
+
+    @property
+    def machines(self) -> Mapping[str, Machine]: ...
+
+    def role(self, do: str) -> Role: ...
+
+    def part(self, name: str, rel: Ref, depth: int, border: str = "") -> Part: ...

@@ -7,15 +7,10 @@ Drawn inline (--depth), it is a cluster of dashed region clusters, each holding 
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from hfsm.diagram import text
 from hfsm.diagram.model import Cluster, Edge, Item, Lane, Node, Ref
-from hfsm.diagram.part import Part, cluster_id, node_id
+from hfsm.diagram.part import Drawer, Part, cluster_id, node_id
 from hfsm.model import ParallelState, Region
-
-if TYPE_CHECKING:
-    from hfsm.diagram.extract import Builder
 
 BACKGROUND = "background"
 
@@ -24,7 +19,7 @@ def _call(region: Region) -> tuple[str, ...]:
     return text.call(region.do, region.with_) + ((BACKGROUND,) if region.background else ())
 
 
-def lanes(b: Builder, st: ParallelState, ref: Ref) -> tuple[Lane, ...]:
+def lanes(b: Drawer, st: ParallelState, ref: Ref) -> tuple[Lane, ...]:
     return tuple(
         Lane(
             name,
@@ -38,7 +33,7 @@ def lanes(b: Builder, st: ParallelState, ref: Ref) -> tuple[Lane, ...]:
     )
 
 
-def inline(b: Builder, st: ParallelState, ref: Ref, depth: int) -> Part:
+def inline(b: Drawer, st: ParallelState, ref: Ref, depth: int) -> Part:
     """The regions of a parallel state drawn inside its cluster, `depth` levels down."""
     items: list[Item] = []
     edges: list[Edge] = []
@@ -47,7 +42,7 @@ def inline(b: Builder, st: ParallelState, ref: Ref, depth: int) -> Part:
     for name, r in st.parallel.items():
         rref = (*ref, name)
         link = r.do if r.do in b.links else ""
-        if r.do in b.src.machines:
+        if r.do in b.machines:
             part = b.part(r.do, rref, depth - 1, cluster_id(rref))
             bottom = tuple(part.outcomes.values())
             items.append(
@@ -74,5 +69,5 @@ def inline(b: Builder, st: ParallelState, ref: Ref, depth: int) -> Part:
     return Part(tuple(items), tuple(edges), {}, entries[0], cluster_id(ref), tuple(rows))
 
 
-def cluster(b: Builder, st: ParallelState, ref: Ref, inner: Part, timer: tuple[str, ...]) -> Cluster:
+def cluster(b: Drawer, st: ParallelState, ref: Ref, inner: Part, timer: tuple[str, ...]) -> Cluster:
     return Cluster(cluster_id(ref), ref[-1], timer, inner.items, (), ref, "", st.doc or "", kind="parallel")

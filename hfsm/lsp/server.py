@@ -7,6 +7,7 @@ documents that call it (their checks read it). Initialization options: `{"lib": 
 
 from __future__ import annotations
 
+import inspect
 import re
 from collections.abc import Sequence
 from importlib.metadata import PackageNotFoundError, version
@@ -177,9 +178,13 @@ def _behaviour_file(analysis: Analysis, name: str) -> tuple[Path, int] | None:
         if path is not None:
             return path.resolve(), 0
     if name in analysis.specs and analysis.specs[name].kind == "builtin":
-        from hfsm import builtins
+        from hfsm.builtins import REGISTRY
 
-        path = Path(builtins.__file__)
+        builtin = REGISTRY.get(name)
+        source = inspect.getsourcefile(builtin.start) if builtin is not None else None
+        if source is None:
+            return None
+        path = Path(source)
         lines = path.read_text(encoding="utf-8").splitlines()
         return path, next((n for n, t in enumerate(lines) if f'"{name}"' in t), 0)
     return None

@@ -4,47 +4,65 @@ from __future__ import annotations
 
 from hfsm.expr import ExprValueError
 from hfsm.runtime.agent import HELD, Event, Frame, Region
-from hfsm.runtime.calls import Calls
+from hfsm.runtime.calls import Calls, save
+from hfsm.runtime.clock import RunClock
 from hfsm.runtime.core import MAX_ENTRIES, FatalError
+from hfsm.runtime.ledger import Ledger
+from hfsm.runtime.parts import HoldsPart, LoopPart, RegionsPart
 from hfsm.runtime.scopes import open_scope, short
 from hfsm.runtime.states import RState
+from hfsm.runtime.timers import Timers
 
 
-class Arcs(Calls):
-    def _settle(self, frame: Frame, event: Event) -> None:
+class Arcs:
+    holds: HoldsPart
+    regions: RegionsPart
+    loop: LoopPart
+
+    def __init__(
+        self, clock: RunClock, ledger: Ledger, calls: Calls, timers: Timers, order: dict[str, int]
+    ) -> None:
+        self.clock = clock
+        self.ledger = ledger
+        self.records = ledger.records
+        self.calls = calls
+        self.timers = timers
+        self.order = order  # the run's agents (and scripted partners) in order, for scopes
+
+    def settle(self, frame: Frame, event: Event) -> None:
         """Hand `event` to `frame`'s state, and each machine's ending to what runs it, up to the top."""
-        ended = self._run(frame, event)
+        ended = self.run(frame, event)
         if ended is not None:
-            self._pass_up(frame, ended)
+            self.pass_up(frame, ended)
 
-    def _pass_up(self, frame: Frame, ended: Event) -> None:
+    def pass_up(self, frame: Frame, ended: Event) -> None:
         while True:
             up = frame.up
             if up is None:
-                self._end_agent(frame.agent, ended)
+                self.loop.end_agent(frame.agent, ended)
                 return
             if up.__class__ is Region:
-                self._region_ended(up, ended)
+                self.regions.region_ended(up, ended)
                 return
             caller: Frame = up  # type: ignore[assignment]
             caller.below = None
             if caller.held is not None:
                 return  # its state holds another arc: the callee's end is let go
             if caller.state.retry_on:
-                retried = self._retry(caller, ended)
+                retried = self.calls.retry(caller, ended)
                 if retried is None:
                     return
                 ended = retried
-            after = self._run(caller, ended)
+            after = self.run(caller, ended)
             if after is None:
                 return
             frame, ended = caller, after
 
-    def _run(self, frame: Frame, event: Event) -> Event | None:
+    def run(self, frame: Frame, event: Event) -> Event | None:
         """Take arcs in `frame` until its state waits (None) or its machine ends (that ending)."""
         while True:
             state = frame.state
-            if state.autonomy and self._held(frame, state, event):
+            if state.autonomy and self.holds.held(frame, state, event):
                 return None
             name = event.name
             target: RState | str | None
@@ -55,23 +73,23 @@ class Arcs(Calls):
                     event = Event("error", error=error)
                     continue
                 if state.save and event.outputs:
-                    self._save(frame, state.save, event.outputs)
+                    save(frame, state.save, event.outputs)
             else:
                 target = self._other_target(frame, state, event)
             if self.records is not None:
                 self.records.arc(frame, state, event, target)
             do = state.do
-            if do:  # _leave's statistics, without its call
+            if do:  # the ledger's statistics, without its call
                 stats = frame.agent.stats.get(do) or frame.agent.new_stats(do)
                 stats.calls += 1
-                stats.ticks += self.tick - frame.entered
+                stats.ticks += self.clock.tick - frame.entered
                 stats.events[name] = stats.events.get(name, 0) + 1
             if target is None:
                 return event  # an unmapped error ends the machine and passes to its caller
             if target.__class__ is str:
-                ending = frame.machine.endings.get(target)  # _finish's work for a machine without outputs
-                return ending if ending is not None else self._finish(frame, target)
-            entered = self._enter(frame, target)  # type: ignore[arg-type]
+                ending = frame.machine.endings.get(target)  # finish's work for a machine without outputs
+                return ending if ending is not None else self.calls.finish(frame, target)
+            entered = self.enter(frame, target)  # type: ignore[arg-type]
             if entered is None:
                 return None
             event = entered
@@ -84,13 +102,13 @@ class Arcs(Calls):
             return state.msg_arcs[short(event.name)]
         if not event.origin:
             event.origin = "/".join(frame.path())
-            self.emit(frame.agent, frame.path(), "error", message=event.error)
+            self.ledger.emit(frame.agent, frame.path(), "error", message=event.error)
         return state.error_target
 
-    def _enter(self, frame: Frame, state: RState) -> Event | None:
+    def enter(self, frame: Frame, state: RState) -> Event | None:
         agent = frame.agent
         frame.state = state
-        frame.entered = self.tick
+        frame.entered = self.clock.tick
         frame.state_deadline = None
         frame.attempt = 1
         frame.inner = frame.radio
@@ -112,21 +130,21 @@ class Arcs(Calls):
             if early is not None:
                 return early
         if state.plain:
-            return self._start_call(frame, state, frame)
+            return self.calls.start_call(frame, state, frame)
         if state.watches:
-            event = self._watch(frame, state)
+            event = self.watch(frame, state)
             if event is not None:
                 return event
         if state.is_parallel:
-            return self._start_regions(frame)
-        event = self._start_call(frame, state, frame)
+            return self.regions.start_regions(frame)
+        event = self.calls.start_call(frame, state, frame)
         if event is not None and state.retry_on:
-            return self._retry(frame, event)
+            return self.calls.retry(frame, event)
         return event
 
     def _early_message(self, frame: Frame, state: RState) -> Event | None:
         """A message already in the mailbox that the state maps, as its event (HELD: held instead)."""
-        if state.autonomy and self._message_held(frame, state):
+        if state.autonomy and self.holds.message_held(frame, state):
             return HELD
         message = frame.agent.take_message(state.msg_arcs, frame.radio.prefix)
         return None if message is None else Event(message.name, message=message)
@@ -136,18 +154,19 @@ class Arcs(Calls):
         `scope:` read (REFERENCE.md#scopes: what it runs is under it until the state is left); or the error
         either gave, taken once the state is entered."""
         if state.timer is not None:
-            ticks = self._ticks(state.timer, frame)
+            ticks = self.timers.ticks(state.timer, frame)
             if ticks.__class__ is Event:
                 return ticks
-            frame.state_deadline = self.tick + ticks  # type: ignore[operator]
+            frame.state_deadline = self.clock.tick + ticks  # type: ignore[operator]
         if state.scope is not None:
-            radio = open_scope(state.scope, frame.scope, frame.agent.name, frame.radio, self.team.order)
+            radio = open_scope(state.scope, frame.scope, frame.agent.name, frame.radio, self.order)
             if isinstance(radio, str):
                 return Event("error", error=radio)
             frame.inner = radio
         return None
 
-    def _choose(self, frame: Frame, state: RState) -> Event:
+    @staticmethod
+    def _choose(frame: Frame, state: RState) -> Event:
         for condition, text, target in state.branches:
             if condition is None:
                 return Event("else", goto=target)
@@ -158,12 +177,12 @@ class Arcs(Calls):
                 return Event("error", error=f"in '{text}': {exc}")
         raise AssertionError("a checked choice ends with else")
 
-    def _watch(self, frame: Frame, state: RState) -> Event | None:
+    @staticmethod
+    def watch(frame: Frame, state: RState) -> Event | None:
         """The first watch that holds, as the event that takes its arc (None: none holds).
 
         A watch back to this state is passed over (docs/REFERENCE.md#watches): the state stays, and the
-        watches after
-        it are tried, so a machine's watch into a state does not silence that state's own."""
+        watches after it are tried, so a machine's watch into a state does not silence that state's own."""
         for watch in state.watches:
             try:
                 holds = watch.condition(frame.scope)

@@ -6,32 +6,35 @@ from typing import Any
 
 from hfsm.expr import ExprValueError
 from hfsm.runtime.agent import Event, Frame, Region
-from hfsm.runtime.builtins import STARTERS, Wait
-from hfsm.runtime.cancel import Cancelling
+from hfsm.runtime.clock import RunClock
+from hfsm.runtime.host import Host
+from hfsm.runtime.ledger import Ledger
+from hfsm.runtime.parts import ArcsPart
 from hfsm.runtime.primitives import PrimitiveActivity, RunContext
-from hfsm.runtime.program import RMachine, resolve_params, timer_ticks
+from hfsm.runtime.program import RMachine, resolve_params
 from hfsm.runtime.states import Callee
-from hfsm.spec import is_finite_number, shown
+from hfsm.runtime.timers import Timers
 
 
-class Calls(Cancelling):
-    def _ticks(self, timer: Any, frame: Frame) -> int | Event:
-        if timer.__class__ is int:
-            return int(timer)
-        seconds = self._seconds(timer, frame, "timer", "a positive number of seconds", zero=False)
-        return seconds if isinstance(seconds, Event) else timer_ticks(seconds, self.dt)
+def save(frame: Frame, names: tuple[tuple[str, str], ...], outputs: dict[str, Any]) -> None:
+    """A state's `save`: the callee's outputs it names, into the machine's vars."""
+    for var, output in names:
+        if output in outputs:
+            frame.vars[var] = outputs[output]
+            frame.vars_shown = False
 
-    def _seconds(self, expr: Any, frame: Frame, what: str, takes: str, *, zero: bool) -> float | Event:
-        """A span given as an expression, checked: finite, and positive (or zero, if allowed)."""
-        try:
-            seconds = expr(frame.scope)
-        except ExprValueError as exc:
-            return Event("error", error=f"{what}: {exc}")
-        if not is_finite_number(seconds) or seconds < 0 or (seconds == 0 and not zero):
-            return Event("error", error=f"{what} must be {takes}, not {shown(seconds)}")
-        return float(seconds)
 
-    def _params(self, callee: Callee, frame: Frame) -> dict[str, Any] | Event:
+class Calls:
+    arcs: ArcsPart
+
+    def __init__(self, clock: RunClock, ledger: Ledger, timers: Timers, host: Host) -> None:
+        self.clock = clock
+        self.ledger = ledger
+        self.timers = timers
+        self.host = host  # what built-ins and primitives may ask of the engine
+
+    @staticmethod
+    def params(callee: Callee, frame: Frame) -> dict[str, Any] | Event:
         frame.in_with = True  # `scope.*` in a `with` reads the state's own scope (docs/REFERENCE.md#scopes)
         try:
             given = {k: v.fn(frame.scope) for k, v in callee.with_.items()}
@@ -42,15 +45,15 @@ class Calls(Cancelling):
         params = resolve_params(callee.spec, given)  # type: ignore[arg-type]
         return Event("error", error=params) if isinstance(params, str) else params
 
-    def _start_call(self, frame: Frame, callee: Callee, where: Frame | Region) -> Event | None:
+    def start_call(self, frame: Frame, callee: Callee, where: Frame | Region) -> Event | None:
         """Start `callee` below `where` (a call state's frame, or a region of `frame`'s state).
 
         `with` reads `frame`. Returns what it ended with at once, or None while it runs.
         """
-        if callee.wait_ticks:  # start_wait's work, without its calls
-            where.below = Wait(self.tick + callee.wait_ticks)
+        if callee.wait_ticks:  # a constant span: the activity made at once, without the starter's call
+            where.below = callee.after(self.clock.tick + callee.wait_ticks)
             return None
-        params = callee.params if callee.params is not None else self._params(callee, frame)
+        params = callee.params if callee.params is not None else self.params(callee, frame)
         if params.__class__ is Event:
             return params
         kind = callee.kind
@@ -58,44 +61,45 @@ class Calls(Cancelling):
         if kind == "machine":
             machine: RMachine = callee.callee  # type: ignore[assignment]
             child = where.below = Frame(machine, params, agent, where)  # type: ignore[arg-type]
-            if machine.timer is None:  # _begin_machine's work, without its call
-                ended = self._enter(child, machine.initial)  # type: ignore[arg-type]
+            if machine.timer is None:  # begin_machine's work, without its call
+                ended = self.arcs.enter(child, machine.initial)  # type: ignore[arg-type]
                 if ended is not None:
-                    ended = self._run(child, ended)
+                    ended = self.arcs.run(child, ended)
             else:
-                ended = self._begin_machine(child)
+                ended = self.begin_machine(child)
             if ended is not None:
                 where.below = None
             return ended
         if kind == "primitive":
             starts = getattr(callee.callee, "start_activity", None)  # a stand-in of hfsm-verify
             if starts is not None:
-                activity: Any = starts(self, agent, params, where)
+                activity: Any = starts(self.host, agent, params, where)
             else:
-                ctx = RunContext(self, agent, callee.do, where)
+                ctx = RunContext(self.host, agent, callee.do, where)
                 activity = PrimitiveActivity(callee.callee, ctx, params, where)  # type: ignore[arg-type]
         else:
-            activity = STARTERS[kind](self, agent, frame, params, where)  # type: ignore[arg-type]
+            activity = callee.start(self.host, agent, frame, params, where)
             if activity.__class__ is Event:
                 return activity
-        event: Event | None = activity.advance(self.tick)
+        event: Event | None = activity.advance(self.clock.tick)
         if event is None:
             where.below = activity
         return event
 
-    def _begin_machine(self, frame: Frame) -> Event | None:
+    def begin_machine(self, frame: Frame) -> Event | None:
         """A called machine starts: its timer, its initial state; its ending if it ends at once."""
         machine: RMachine = frame.machine
         if machine.timer is not None:
-            ticks = self._ticks(machine.timer, frame)
+            ticks = self.timers.ticks(machine.timer, frame)
             if ticks.__class__ is Event:
                 ticks.origin = "/".join(frame.prefix())
                 return ticks
-            frame.deadline = self.tick + ticks  # type: ignore[operator]
-        event = self._enter(frame, machine.initial)  # type: ignore[arg-type]
-        return None if event is None else self._run(frame, event)
+            frame.deadline = self.clock.tick + ticks  # type: ignore[operator]
+        event = self.arcs.enter(frame, machine.initial)  # type: ignore[arg-type]
+        return None if event is None else self.arcs.run(frame, event)
 
-    def _finish(self, frame: Frame, outcome: str) -> Event:
+    @staticmethod
+    def finish(frame: Frame, outcome: str) -> Event:
         """`frame`'s machine ends in `outcome`: its outputs evaluated."""
         machine = frame.machine
         if not machine.outputs:
@@ -111,7 +115,7 @@ class Calls(Cancelling):
             return Event("error", error=f"outputs of '{machine.name}': {exc}")
         return Event(outcome, outputs)
 
-    def _retry(self, frame: Frame, event: Event) -> Event | None:
+    def retry(self, frame: Frame, event: Event) -> Event | None:
         """The callee of `frame`'s state ended with `event`: call it again (docs/REFERENCE.md#retries), or
         hand it on."""
         state = frame.state
@@ -122,8 +126,8 @@ class Calls(Cancelling):
             if frame.attempt > times:  # type: ignore[operator]
                 return event
             self._ended_once(frame, event)
-            if self.trace is not None:
-                self.emit(
+            if self.ledger.records is not None:
+                self.ledger.emit(
                     frame.agent,
                     frame.path(),
                     "event",
@@ -131,39 +135,40 @@ class Calls(Cancelling):
                     attempt=frame.attempt + 1,
                     outcome=event.name,
                 )
-            delay = self._delay(state.retry_delay, frame)
+            delay = self.timers.delay(state.retry_delay, frame)
             if delay.__class__ is Event:
                 return delay
             if delay:
-                frame.retry_at = self.tick + delay  # type: ignore[operator]
+                frame.retry_at = self.clock.tick + delay  # type: ignore[operator]
                 return None
-            self._next_attempt(frame)
-            ended = self._start_call(frame, state, frame)
+            self.next_attempt(frame)
+            ended = self.start_call(frame, state, frame)
             if ended is None:
                 return None
             event = ended
         return event
 
-    def _next_attempt(self, frame: Frame) -> None:
+    def next_attempt(self, frame: Frame) -> None:
         """`state.attempt` grows as the behaviour is called again (docs/REFERENCE.md#retries), not during the
         delay."""
         frame.attempt += 1
         if frame.state.watches:
-            self.wake = True  # the watches read it next in the following tick: not to be skipped
+            self.clock.wake = True  # the watches read it next in the following tick: not to be skipped
 
     def _ended_once(self, frame: Frame, event: Event) -> None:
         """An attempt that will be retried: its error written down, or its outputs saved."""
         if event.name == "error":
             if not event.origin:
                 event.origin = "/".join(frame.path())
-                self.emit(frame.agent, frame.path(), "error", message=event.error)
+                self.ledger.emit(frame.agent, frame.path(), "error", message=event.error)
             return
         if frame.state.save and event.outputs:
-            self._save(frame, frame.state.save, event.outputs)
+            save(frame, frame.state.save, event.outputs)
             if frame.state.watches:
-                self.wake = True  # a watch may read what the attempt saved
+                self.clock.wake = True  # a watch may read what the attempt saved
 
-    def _count_of(self, times: Any, frame: Frame, what: str) -> int | Event:
+    @staticmethod
+    def _count_of(times: Any, frame: Frame, what: str) -> int | Event:
         if times.__class__ is int:
             return int(times)
         try:
@@ -173,9 +178,3 @@ class Calls(Cancelling):
         if value.__class__ is not int or value <= 0:
             return Event("error", error=f"retry times must be a positive whole number, not {value!r}")
         return int(value)
-
-    def _delay(self, delay: Any, frame: Frame) -> int | Event:
-        if delay.__class__ is int:
-            return int(delay)
-        seconds = self._seconds(delay, frame, "retry delay", "a number of seconds >= 0", zero=True)
-        return seconds if isinstance(seconds, Event) else max(0, self.span(seconds))

@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 from hfsm.runtime.agent import Agent, Event, Frame, Region
-from hfsm.runtime.core import Core
+from hfsm.runtime.ledger import Ledger
 
 
-class Cancelling(Core):
-    def _cancel_below(self, frame: Frame, reason: str) -> str:
+class Cancelling:
+    def __init__(self, ledger: Ledger) -> None:
+        self.ledger = ledger
+
+    def cancel_below(self, frame: Frame, reason: str) -> str:
         """Cancel whatever runs below `frame`'s state; a problem as text (a swallowed cancel), or ''."""
         below = frame.below
         frame.below = None
@@ -16,33 +19,33 @@ class Cancelling(Core):
             return ""
         cls = below.__class__
         if cls is Frame:
-            problem = self._cancel_below(below, reason)
-            self._leave(below, reason)
+            problem = self.cancel_below(below, reason)
+            self.ledger.leave(below, reason)
             return problem
         if cls is list:
             problem = ""
             for region in reversed(below):  # last started, first ended, as SCXML exits a parallel
                 if region.result is None:
-                    problem = self._cancel_region(region, reason) or problem
+                    problem = self.cancel_region(region, reason) or problem
             return problem
         text: str = below.cancel()
         return text
 
-    def _cancel_region(self, region: Region, reason: str) -> str:
+    def cancel_region(self, region: Region, reason: str) -> str:
         below = region.below
         region.below = None
         problem = ""
         if below.__class__ is Frame:
-            problem = self._cancel_below(below, reason)
-            self._leave(below, reason)
+            problem = self.cancel_below(below, reason)
+            self.ledger.leave(below, reason)
         elif below is not None:
             problem = below.cancel()
-        self._region_left(region, reason)
+        self.ledger.region_left(region, reason)
         return problem
 
-    def _cancelled(self, frame: Frame, reason: str, event: Event) -> Event:
+    def cancelled(self, frame: Frame, reason: str, event: Event) -> Event:
         """Cancel below `frame` for `event`; a cancel that was swallowed makes it the event `error`."""
-        problem = self._cancel_below(frame, reason)
+        problem = self.cancel_below(frame, reason)
         return Event("error", error=problem) if problem else event
 
     def stop(self, agent: Agent, reason: str = "stopped") -> None:
@@ -50,7 +53,7 @@ class Cancelling(Core):
         if not agent.started or agent.root is None:
             return
         root = agent.root
-        self._cancel_below(root, reason)
-        self._leave(root, reason)
+        self.cancel_below(root, reason)
+        self.ledger.leave(root, reason)
         agent.root = None
-        self.emit(agent, [agent.top], "exit", outcome=None)
+        self.ledger.emit(agent, [agent.top], "exit", outcome=None)

@@ -11,10 +11,12 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from hfsm.autonomy import JOIN, LEVELS
+from hfsm.autonomy import FULL, JOIN, LEVELS
 from hfsm.primitive import Message
 from hfsm.runtime.agent import HELD, Agent, Event, Frame, leaves
-from hfsm.runtime.parallel import Parallel
+from hfsm.runtime.cancel import Cancelling
+from hfsm.runtime.ledger import Ledger
+from hfsm.runtime.parts import ArcsPart, RegionsPart
 from hfsm.runtime.scopes import short
 from hfsm.runtime.states import RState
 
@@ -57,10 +59,20 @@ def hold_text(agent: Agent) -> str:
     )
 
 
-class Holds(Parallel):
+class Holds:
+    arcs: ArcsPart
+    regions: RegionsPart
+
+    def __init__(self, agents: list[Agent], ledger: Ledger, cancelling: Cancelling) -> None:
+        self.agents = agents
+        self.ledger = ledger
+        self.cancelling = cancelling
+        self.level = FULL  # the run's autonomy level
+        self.approved: Event | None = None  # the event the operator answered: taken, not held again
+
     # --- an arc held ---------------------------------------------------------------------------
 
-    def _held(self, frame: Frame, state: RState, event: Event) -> bool:
+    def held(self, frame: Frame, state: RState, event: Event) -> bool:
         """Whether `event`, about to take its arc from `frame`'s state, is held instead."""
         if event is HELD or frame.held is not None:
             return True  # held on entry; or it holds another arc, and this end of its callee is let go
@@ -72,20 +84,20 @@ class Holds(Parallel):
             return False
         if event.name == "error" and not event.origin:
             event.origin = "/".join(frame.path())
-            self.emit(frame.agent, frame.path(), "error", message=event.error)
+            self.ledger.emit(frame.agent, frame.path(), "error", message=event.error)
         self._hold(frame, Hold(key, need, event))  # type: ignore[arg-type]
         return True
 
-    def _timer_held(self, frame: Frame) -> bool:
+    def timer_held(self, frame: Frame) -> bool:
         """The state's timer fired: whether its `timeout` arc is held (the callee goes on)."""
         need = frame.state.autonomy.get("timeout")
         if need is None or self.level >= need:
             return False
-        self.emit(frame.agent, frame.path(), "timeout", timer="state")
+        self.ledger.emit(frame.agent, frame.path(), "timeout", timer="state")
         self._hold(frame, Hold("timeout", need, None))
         return True
 
-    def _message_held(self, frame: Frame, state: RState) -> bool:
+    def message_held(self, frame: Frame, state: RState) -> bool:
         """Whether the earliest message the state maps needs a level the run is below: then it is
         kept out of the mailbox, held, and the callee goes on."""
         mailbox = frame.agent.mailbox
@@ -108,7 +120,7 @@ class Holds(Parallel):
         frame.held = hold
         frame.state_deadline = None  # the state's own timer is not looked at while it holds
         frame.retry_at = None
-        self.emit(frame.agent, frame.path(), "held", event=hold.key, level=LEVELS[hold.level])
+        self.ledger.emit(frame.agent, frame.path(), "held", event=hold.key, level=LEVELS[hold.level])
 
     # --- the operator's answers ----------------------------------------------------------------
 
@@ -145,7 +157,7 @@ class Holds(Parallel):
             mailbox.insert(min(hold.index, len(mailbox)), hold.message)
         frame.held = None
         forced = Event(event, goto=target)
-        self._answer(frame, self._cancelled(frame, event, forced))
+        self._answer(frame, self.cancelling.cancelled(frame, event, forced))
 
     def set_level(self, level: int) -> None:
         """The run's level changes: every held arc whose level is now met is taken, outermost first."""
@@ -178,16 +190,16 @@ class Holds(Parallel):
         if hold.event is not None:
             event = hold.event
         elif hold.message is not None:
-            event = self._cancelled(frame, hold.key, Event(hold.key, message=hold.message))
+            event = self.cancelling.cancelled(frame, hold.key, Event(hold.key, message=hold.message))
         else:
-            event = self._cancelled(frame, "timeout", Event("timeout"))
+            event = self.cancelling.cancelled(frame, "timeout", Event("timeout"))
         self._answer(frame, event)
 
     def _answer(self, frame: Frame, event: Event) -> None:
         frame.agent.entries = 0
         self.approved = event
         try:
-            self._settle(frame, event)
+            self.arcs.settle(frame, event)
         finally:
             self.approved = None
         self._joined(frame)
@@ -207,9 +219,11 @@ class Holds(Parallel):
                 return
             result: Event = region.result  # type: ignore[union-attr]
             event = (
-                self._region_failed(owner, result) if result.name == "error" else self._join(owner, regions)
+                self.regions.region_failed(owner, result)
+                if result.name == "error"
+                else self.regions.join(owner, regions)
             )
             if event is None:
                 return
-            self._settle(owner, event)
+            self.arcs.settle(owner, event)
             frame = owner

@@ -5,13 +5,16 @@ from __future__ import annotations
 from typing import Any, Protocol
 
 from hfsm.runtime.agent import Agent, Frame, Region
-from hfsm.runtime.barrier import Team
+from hfsm.runtime.team import Team
 
 
 class Host(Protocol):
-    dt: float
     tick: int
     team: Team
+
+    @property
+    def dt(self) -> float:
+        """Seconds per tick."""
 
     @property
     def time(self) -> float:

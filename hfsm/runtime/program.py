@@ -7,7 +7,7 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 from hfsm.autonomy import join_key, level_of
-from hfsm.builtins import BUILTINS
+from hfsm.builtins import REGISTRY
 from hfsm.checks.context import machine_spec
 from hfsm.expr import TIMED, Fn, Names, compile_expr, reads
 from hfsm.library import MachineFile
@@ -125,13 +125,17 @@ class Program:
         callee.do = call.do
         machine, prim = self.machines.get(call.do), self.registry.get(call.do)
         callee.callee = machine or prim
-        callee.kind = "machine" if machine else "primitive" if prim else call.do
-        callee.spec = machine.spec if machine else prim.spec if prim else BUILTINS[call.do]
+        builtin = None if machine or prim else REGISTRY[call.do]
+        callee.kind = "machine" if machine else "primitive" if prim else "builtin"
+        callee.spec = machine.spec if machine else prim.spec if prim else builtin.spec  # type: ignore[union-attr]
+        if builtin is not None:
+            callee.start, callee.after, callee.traced = builtin.start, builtin.after, builtin.traced
         callee.with_ = {k: compile_value(v, names) for k, v in call.with_.items()}
         if all(v.constant for v in callee.with_.values()):
             params = resolve_params(callee.spec, {k: v.literal for k, v in callee.with_.items()})
             callee.params = params if isinstance(params, dict) else None
-            seconds: Any = callee.params.get("seconds") if callee.params and callee.kind == "wait" else None
+            span = builtin.span_param if builtin is not None and builtin.after is not None else ""
+            seconds: Any = callee.params.get(span) if callee.params and span else None
             if is_finite_number(seconds) and seconds > 0:
                 callee.wait_ticks = max(0, span_ticks(seconds, self.dt))
 

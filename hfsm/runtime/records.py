@@ -71,8 +71,9 @@ class Records:
         """An event taken by `frame`'s state (its arc's target) and the state's exit."""
         shown = target.name if target.__class__ is RState else target
         extra = self.vars_of(frame)
-        if state.do == "barrier" and event.outputs:
-            extra["arrived"] = event.outputs.get("arrived")  # who the barrier heard (the monitor)
+        if state.traced and event.outputs:
+            for name in state.traced:  # e.g. who a barrier heard (the monitor shows it)
+                extra[name] = event.outputs.get(name)
         self.write(frame.agent, frame.path(), "event", event=event.name, target=shown, **extra)
         self.write(frame.agent, frame.path(), "exit", event=event.name)
 
@@ -120,7 +121,8 @@ class Prefix:
         return pair
 
     def arc(self, state: RState, event: str, target: Any) -> tuple[Any, tuple[str, str]]:
-        """The `event` and `exit` lines of an arc (kept, but for a barrier's, whose lines vary)."""
+        """The `event` and `exit` lines of an arc (kept, but for a callee's whose outputs are traced:
+        those lines vary)."""
         json = self.json
         name, shown = json[event], json[target.name if target.__class__ is RState else target]
         path = f"{self.head}{json[state.name]}]"
@@ -128,7 +130,7 @@ class Prefix:
             f'{path}, "kind": "event", "event": {name}, "target": {shown}' + _END,
             f'{path}, "kind": "exit", "event": {name}' + _END,
         )
-        if state.do != "barrier":
+        if not state.traced:
             self.arcs.setdefault(state, {})[event] = (target, lines)
         return target, lines
 
@@ -253,9 +255,9 @@ class TextRecords(Records):
             self._arc(frame, state, event, target)
 
     def _arc(self, frame: Frame, state: RState, event: Event, target: RState | str | None) -> None:
-        """An arc not taken before from this place and state to this target, a barrier's (whose
-        records say who arrived), or one taken after the vars changed."""
-        if not frame.vars_shown or (state.do == "barrier" and event.outputs):
+        """An arc not taken before from this place and state to this target, one whose record shows
+        outputs of the callee (a barrier's: who arrived), or one taken after the vars changed."""
+        if not frame.vars_shown or (state.traced and event.outputs):
             super().arc(frame, state, event, target)
             return
         ends = frame.text.arc(state, event.name, target)

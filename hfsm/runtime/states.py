@@ -14,17 +14,22 @@ from hfsm.values import Value
 class Callee:
     """What a call state or a region calls: its behaviour, how to find it, its `with` and `save`."""
 
-    __slots__ = ("callee", "do", "kind", "params", "save", "spec", "wait_ticks", "with_")
+    __slots__ = (
+        "after", "callee", "do", "kind", "params", "save", "spec", "start", "traced", "wait_ticks", "with_"
+    )  # fmt: skip
 
     def __init__(self) -> None:
         self.do = ""
-        self.kind = ""  # "machine", "primitive", or the built-in's name
+        self.kind = ""  # "machine", "primitive", or "builtin"
         self.callee: RMachine | Primitive | None = None
+        self.start: Any = None  # a built-in's starter (hfsm/builtins/registry.py)
+        self.after: Any = None  # a built-in's activity for a constant span: after(deadline)
+        self.traced: tuple[str, ...] = ()  # the outputs the trace shows when it ends (a built-in's trait)
         self.spec: BehaviourSpec | None = None
         self.with_: dict[str, Value] = {}
         self.params: dict[str, Any] | None = None  # the callee's params, when `with` holds no expression
         self.save: tuple[tuple[str, str], ...] = ()
-        self.wait_ticks = 0  # > 0: a `wait` of constant seconds, that many ticks (started without a call)
+        self.wait_ticks = 0  # > 0: a built-in's constant span, that many ticks (started by `after`)
 
 
 class RRegion(Callee):

@@ -1,4 +1,4 @@
-"""A tick's time as the trace writes it: `encode(round(k * dt, 9))`, the JSON of Core.time."""
+"""A tick's time as the trace writes it: `encode(round(k * dt, 9))`, the JSON of RunClock.time."""
 
 from __future__ import annotations
 

@@ -6,9 +6,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
+from hfsm.builtins.barrier import Barrier
+from hfsm.builtins.wait import Wait
+from hfsm.builtins.wait_for import WaitFor
 from hfsm.runtime.agent import Agent, Frame, Region, leaves
-from hfsm.runtime.barrier import Barrier
-from hfsm.runtime.builtins import Wait, WaitFor
 from hfsm.runtime.engine import Engine
 from hfsm.runtime.run import _next_tick
 from hfsm.verify.props import Props

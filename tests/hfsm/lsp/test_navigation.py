@@ -48,7 +48,7 @@ def test_a_primitive_goes_to_its_python_function(server: tuple[HfsmServer, Path]
 def test_a_built_in_goes_to_its_declaration(server: tuple[HfsmServer, Path]) -> None:
     ls, path = server
     found = _definition(ls, path.as_uri(), lsp.Position(10, 9))
-    assert found is not None and found.uri.endswith("hfsm/builtins.py")
+    assert found is not None and found.uri.endswith("hfsm/builtins/wait.py")
 
 
 def test_a_var_is_renamed_in_its_declaration_its_saves_and_its_expressions(

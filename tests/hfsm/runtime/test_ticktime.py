@@ -1,5 +1,5 @@
 """A tick's time as text, from its table (TickTimes) or by formatting (seconds_text), is the JSON of
-Core.time: `round(k * dt, 9)` as `json.dumps` writes it."""
+RunClock.time: `round(k * dt, 9)` as `json.dumps` writes it."""
 
 from __future__ import annotations
 
