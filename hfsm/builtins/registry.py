@@ -1,6 +1,6 @@
-"""The built-in behaviours' registry: each built-in is one module of this package that declares its
-traits (below) and registers itself. Checks, diagrams, the trace and the runtime ask a trait, never
-a built-in's name (docs/REFERENCE.md#built-in-behaviours)."""
+"""The built-in behaviours' registry: each built-in is one module of this package that declares a
+`Builtin` (its signature, its traits, its running code), registered by hfsm/builtins/__init__.py.
+Checks, diagrams, the trace and the runtime ask a trait, never a built-in's name (docs/ENGINE.md)."""
 
 from __future__ import annotations
 

@@ -1,5 +1,5 @@
-"""The radio (docs/REFERENCE.md#messages): messages sent under a scope's name, delivered into mailboxes
-or to the team's barriers, and a state's mapped message taking its arc."""
+"""The radio (docs/REFERENCE.md#messages-between-agents): messages sent under a scope's name,
+delivered into mailboxes or to the team's barriers, and a state's mapped message taking its arc."""
 
 from __future__ import annotations
 
