@@ -87,18 +87,19 @@ def _loop(
     failures = Failures(engine, options.failures)
     operator = Operator(engine, options.decisions, options.live)
     world_records = getattr(world, "trace_records", None)  # a world may add records (robots' poses)
+    clock, loop = engine.clock, engine.loop
     try:
         paused = _begin(engine, operator, failures, top, options)
         if paused:
             return "blocked forever: " + paused, "", None
-        while engine.running:
+        while loop.running:
             following = _following(engine, failures, operator)
             if following is None or following > last:
                 return _stopped(engine, following, last, options.max_time), "", None
             if not world.static:
-                world.advance(engine.tick)
+                world.advance(clock.tick)
                 _world_records(engine, world_records, following)
-            engine.tick = following
+            clock.tick = following
             if operator.busy and (paused := _operator_first(operator, following)):
                 return "blocked forever: " + paused + "; " + _where(engine.agents), "", None
             if failures.due or not world.static:
@@ -109,7 +110,7 @@ def _loop(
             for agent in agents:
                 if agent.result is None:
                     agent.entries = 0
-                    engine.step(agent.root)  # type: ignore[arg-type]
+                    loop.step(agent.root)  # type: ignore[arg-type]
             if engine.records is not None:
                 engine.records.flush()
     except FatalError as exc:
@@ -121,7 +122,7 @@ def _following(engine: Engine, failures: Failures, operator: Operator) -> int | 
     """The next tick to run: the next (a static world: the next in which anything can happen); while
     paused, the next, whatever is due in it, since a step runs one tick."""
     if operator.paused or not engine.world.static:
-        return engine.tick + 1
+        return engine.clock.tick + 1
     return _next_tick(engine, failures, operator if operator.busy else None)
 
 
@@ -173,10 +174,11 @@ def _world_records(engine: Engine, records: WorldRecords | None, tick: int) -> N
 
 def _next_tick(engine: Engine, failures: Failures, operator: Operator | None = None) -> int | None:
     """In a static world, the next tick in which anything can happen; None when nothing can."""
-    now = engine.tick
+    clock = engine.clock
+    now = clock.tick
     hit = operator is not None and operator.hit()
-    if engine.wake or (engine.team.waiting and engine.team.live()) or hit:
-        engine.wake = False
+    if clock.wake or (engine.team.waiting and engine.team.live()) or hit:
+        clock.wake = False
         return now + 1
     best = engine.world.next_delivery() or sys.maxsize
     for agent in engine.agents:
