@@ -1,8 +1,8 @@
 """States a second of hfsm-verify on the paper's two-robot handshakes, with stand-ins, and where the
-time goes (copying states in and out as bytes, against running the engine's ticks).
+time goes (keys of states, copying states in and out as bytes, running the engine's ticks).
 
 Rewrites the bench_verify section of docs/VERIFY.md (nothing else in it).
-Usage: nice -n 15 .venv/bin/python tools/bench_verify.py [--no-doc]
+Usage: nice -n 15 .venv/bin/python tools/bench_verify.py [--no-doc] [--runs N]
 """
 
 from __future__ import annotations
@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import os
 import platform
+import statistics
 import sys
 import time
 from collections.abc import Callable
@@ -62,19 +63,53 @@ class Timed:
         setattr(self.owner, self.name, self.original)
 
 
+class TimedKeys(Timed):
+    """Seconds spent in the keys `search.keyer` makes (a function made per search)."""
+
+    def __enter__(self) -> Timed:
+        original = self.original
+
+        def keyer(*args: Any) -> Any:
+            key = original(*args)
+
+            def timed(engine: Any) -> bytes:
+                start = time.perf_counter()
+                try:
+                    return key(engine)  # type: ignore[no-any-return]
+                finally:
+                    self.seconds += time.perf_counter() - start
+
+            return timed
+
+        setattr(self.owner, self.name, keyer)
+        return self
+
+
 def one(args: list[str]) -> dict[str, Any]:
     import contextlib
     import io
     import json
     import tempfile
+    from unittest import mock
 
     from hfsm.cli import verify as verify_cli
 
+    searched = [0.0]
+    explore = search.explore
+
+    def timed_explore(*args: Any) -> Any:
+        start = time.process_time()
+        try:
+            return explore(*args)
+        finally:
+            searched[0] += time.process_time() - start
+
     with (
+        mock.patch.object(search, "explore", timed_explore),
         tempfile.TemporaryDirectory() as folder,
         Timed(snapshot.Snapshots, "dump") as dump,
         Timed(snapshot.Snapshots, "load") as load,
-        Timed(search, "digest") as digest,
+        TimedKeys(search, "keyer") as digest,
     ):
         out = io.StringIO()
         cpu = time.process_time()
@@ -82,23 +117,33 @@ def one(args: list[str]) -> dict[str, Any]:
             code = verify_cli.main([*args, "--json", "--out", str(Path(folder) / "ce.jsonl")])
         cpu = time.process_time() - cpu
     verdict: dict[str, Any] = json.loads(out.getvalue())
-    verdict.update(code=code, dump=dump.seconds, load=load.seconds, digest=digest.seconds, cpu=cpu)
+    verdict.update(
+        code=code, dump=dump.seconds, load=load.seconds, key=digest.seconds, cpu=cpu, search_cpu=searched[0]
+    )
     return verdict
 
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--no-doc", action="store_true", help="print only; leave docs/VERIFY.md")
+    parser.add_argument("--runs", type=int, default=5, help="runs of each case (medians are shown)")
     args = parser.parse_args()
     rows = []
     for name, case in CASES:
-        v = one(case)
-        spent = v["seconds"] or 1e-9
-        copy = v["dump"] + v["load"] + v["digest"]
+        runs = [one(case) for _ in range(args.runs)]
+        v = runs[0]
+        spent = statistics.median(r["seconds"] or 1e-9 for r in runs)
+        rate = statistics.median(r["states"] / (r["search_cpu"] or 1e-9) for r in runs)
+        rates = ", ".join(f"{r['states'] / (r['search_cpu'] or 1e-9):,.0f}" for r in runs)
+        share = {
+            k: statistics.median(r[k] / (r["seconds"] or 1e-9) for r in runs) for k in ("key", "dump", "load")
+        }
+        rest = 1 - sum(share.values())
         rows.append(
-            f"| {name} | {v['verdict']} | {v['states']} | {v['seconds']:.2f} | {v['states'] / spent:,.0f} "
-            f"| {v['states'] / v['cpu']:,.0f} "
-            f"| {100 * copy / spent:.0f} % | {100 * (spent - copy) / spent:.0f} % |"
+            f"| {name} | {v['verdict']} | {v['states']} | {spent:.2f} | {v['states'] / spent:,.0f} "
+            f"| **{rate:,.0f}** ({rates}) "
+            f"| {100 * share['key']:.0f} % | {100 * (share['dump'] + share['load']):.0f} % "
+            f"| {100 * rest:.0f} % |"
         )
         print(rows[-1], flush=True)
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
@@ -107,9 +152,10 @@ def main() -> int:
         f"`nice -n 15 .venv/bin/python tools/bench_verify.py` on {platform.python_implementation()} "
         f"{platform.python_version()}, {os.cpu_count()} cores, load average {load:.1f} when it ended:",
         "",
-        "| case | verdict | states | seconds | states/s | states/CPU-s (process, load, checks included) "
-        "| copying states | engine and search |",
-        "|---|---|---|---|---|---|---|---|",
+        "| case | verdict | states | seconds (median) | states/s "
+        "| states/CPU-s of the search: median (each run) "
+        "| keys | copies | engine and search |",
+        "|---|---|---|---|---|---|---|---|---|",
         *rows,
         "",
     ]
