@@ -119,14 +119,13 @@ class _Search:
             if live is not None:
                 self.live -= 1
             pending: list[tuple[int, ...]] = [()]
-            engine: Any
             while pending:
                 chooser.begin(pending.pop())
                 if live is not None:  # the state itself, unused yet: no copy to make
                     engine, live = live, None
                 else:
                     engine = snaps.load(data)
-                ended = next_state(engine, engine.world, chooser, last)
+                ended = next_state(engine, engine.world, chooser, last)  # type: ignore[arg-type]
                 pending.extend(chooser.siblings())
                 if not self.visit(engine, ended, index):
                     return self.done(False)
