@@ -27,9 +27,7 @@ SKIPPED: dict[str, frozenset[str]] = {
     "Agent": frozenset({"stats", "entries", "clock", "rng", "robot", "inputs"}),
     "Team": frozenset({"engine"}),
     "Engine": frozenset({"_time", "spans", "records", "trace", "breaks", "by_name", "dt"}),
-    "ChoosingWorld": frozenset(
-        {"decider", "n", "posted", "tick", "values", "delay", "tasks", "start", "room", "flying"}
-    ),
+    "ChoosingWorld": frozenset({"decider", "n", "posted", "tick", "given", "delay", "flying"}),
     "AgentResult": frozenset({"time"}),
 }
 # Attributes that hold a tick (besides every `deadline`): written as a distance from the engine's.

@@ -21,7 +21,7 @@ from hfsm.runtime.program import Program
 from hfsm.runtime.run import RunOptions
 from hfsm.verify.canon import Keys
 from hfsm.verify.choices import Choice, Chooser
-from hfsm.verify.radio import ChoosingWorld
+from hfsm.verify.radio import ChoosingWorld, Given
 from hfsm.verify.snapshot import Snapshots, shared_numbers, shared_objects
 from hfsm.verify.step import Ended, first_state, next_state
 
@@ -77,13 +77,14 @@ def explore(
     inputs: dict[str, Any],
 ) -> Outcome:
     """Search from tick 0; `program`'s stand-ins must ask `chooser`."""
-    search = _Search(program, budget, check, chooser)
+    given = Given(inputs)
+    search = _Search(program, budget, check, chooser, given)
     threshold = gc.get_threshold()
     gc.collect()
     gc.freeze()  # the program and everything loaded before: never scanned again while states churn
     gc.set_threshold(GC_YOUNG, *threshold[1:])
     try:
-        return search.run(lambda: _first(program, options, chooser, budget, inputs))
+        return search.run(lambda: _first(program, options, chooser, budget, given))
     finally:
         gc.set_threshold(*threshold)
         gc.unfreeze()
@@ -91,12 +92,14 @@ def explore(
 
 
 class _Search:
-    def __init__(self, program: Program, budget: Budget, check: Check, chooser: Chooser) -> None:
+    def __init__(
+        self, program: Program, budget: Budget, check: Check, chooser: Chooser, given: Given
+    ) -> None:
         self.started = time.perf_counter()
         self.budget = budget
         self.check = check
         self.chooser = chooser
-        shared = shared_objects([program, chooser, program.registry, _RNG])
+        shared = shared_objects([program, chooser, program.registry, _RNG, given])
         self.snaps = Snapshots(shared)
         self.key = Keys(shared_numbers(shared))
         self.result = Outcome()
@@ -173,9 +176,9 @@ class _Search:
 
 
 def _first(
-    program: Program, options: RunOptions, chooser: Chooser, budget: Budget, inputs: dict[str, Any]
+    program: Program, options: RunOptions, chooser: Chooser, budget: Budget, given: Given
 ) -> tuple[Engine, Ended | None]:
-    world = ChoosingWorld(chooser, budget.loss, budget.delay, budget.fail, inputs)
+    world = ChoosingWorld(chooser, budget.loss, budget.delay, budget.fail, given)
     made = first_state(program, options, chooser, world)
     if isinstance(made, Ended):
         return Engine([], world, program.dt, None), made
