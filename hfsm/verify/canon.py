@@ -100,14 +100,11 @@ class Keys:
         if cls is dict:
             put("{")
             put(len(obj))
-            for k, v in obj.items():
-                self._walk(k)
-                self._value(v)
+            self._items(obj.items())
         elif cls is list or cls is tuple:
             put("[" if cls is list else "(")
             put(len(obj))
-            for v in obj:
-                self._value(v)
+            self._values(obj)
         elif cls is set or cls is frozenset:
             put("s")
             put(len(obj))
@@ -119,14 +116,31 @@ class Keys:
         else:
             self._object(obj, cls)
 
-    def _value(self, v: Any) -> None:
-        c = v.__class__
-        if c in _ATOMS:
-            self.out.append(v)
-        elif c is str:
-            self.out.append(intern(v))
-        else:
-            self._walk(v)
+    def _values(self, values: Any) -> None:
+        put, walk = self.out.append, self._walk
+        for v in values:
+            c = v.__class__
+            if c in _ATOMS:
+                put(v)
+            elif c is str:
+                put(intern(v))
+            else:
+                walk(v)
+
+    def _items(self, items: Any) -> None:
+        put, walk = self.out.append, self._walk
+        for k, v in items:
+            if k.__class__ is str:
+                put(intern(k))
+            else:
+                walk(k)
+            c = v.__class__
+            if c in _ATOMS:
+                put(v)
+            elif c is str:
+                put(intern(v))
+            else:
+                walk(v)
 
     def _object(self, obj: Any, cls: type) -> None:
         put = self.out.append
@@ -135,23 +149,40 @@ class Keys:
         put(intern(cls.__name__))
         if cls is self.world:
             self._flying(obj)
-        now = self.now
+        if slots:
+            self._slots(obj, slots, ticks)
+        attrs = getattr(obj, "__dict__", None)
+        if attrs:
+            self._attrs(attrs, skipped, ticks)
+        put(">")
+
+    def _slots(self, obj: Any, slots: tuple[str, ...], ticks: frozenset[str]) -> None:
+        put, walk, now = self.out.append, self._walk, self.now
         for attr in slots:
-            v = getattr(obj, attr, _UNSET)
-            if v.__class__ is int and attr in ticks:
-                put(v - now)
+            v: Any = getattr(obj, attr, _UNSET)
+            c = v.__class__
+            if c in _ATOMS:
+                put(v - now if c is int and attr in ticks else v)
+            elif c is str:
+                put(intern(v))
             elif v is _UNSET:
                 put("u")
             else:
-                self._value(v)
-        for attr, v in getattr(obj, "__dict__", _NO_ATTRS).items():
-            if attr not in skipped:
-                put(intern(attr))
-                if v.__class__ is int and attr in ticks:
-                    put(v - now)
-                else:
-                    self._value(v)
-        put(">")
+                walk(v)
+
+    def _attrs(self, attrs: dict[str, Any], skipped: frozenset[str], ticks: frozenset[str]) -> None:
+        put, walk, now = self.out.append, self._walk, self.now
+        for attr, v in attrs.items():
+            if attr in skipped:
+                continue
+            put(intern(attr))
+            c = v.__class__
+            if c in _ATOMS:
+                put(v - now if c is int and attr in ticks else v)
+            elif c is str:
+                put(intern(v))
+            else:
+                walk(v)
 
     def _flying(self, world: Any) -> None:
         # Messages in flight in the order they arrive in, each its arrival tick: the numbers that
