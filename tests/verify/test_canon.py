@@ -191,3 +191,15 @@ def _prefixes(found: Any, data: bytes) -> list[tuple[int, ...]]:
         pending.extend(chooser.siblings())
         done.append(prefix)
     return done
+
+
+def test_a_situation_met_again_later_is_explored_again(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    """`spin` comes back to the same situation every second, later each time: merged into the
+    first, its run would seem to end nowhere; explored again, it reaches the bound."""
+    code, verdict = verify(capsys, DATA / "spin.yaml", "--bound", "5", out=tmp_path / "ce.jsonl")
+    assert (code, verdict["kind"]) == (1, "hang")
+    assert "still running at the bound (5 s)" in verdict["stderr"]
+    code, verdict = verify(capsys, DATA / "spin.yaml", "--param", "laps=0", out=tmp_path / "ok.jsonl")
+    assert (code, verdict["verdict"], verdict["exhausted"]) == (0, "ok", True)
