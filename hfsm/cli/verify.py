@@ -99,7 +99,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 def _main(args: argparse.Namespace) -> int:
     from hfsm.runtime.run import RunOptions
-    from hfsm.verify.build import bound_of, input_values, read_values, verify_program
+    from hfsm.verify.build import bound_of, input_values, read_values, unobserved, verify_program
     from hfsm.verify.choices import Chooser
     from hfsm.verify.properties import Properties
     from hfsm.verify.props import read_props
@@ -129,7 +129,8 @@ def _main(args: argparse.Namespace) -> int:
     budget.max_seconds = args.max_seconds or budget.max_seconds
     failures = top.model.failure_outcomes
     check = Properties(failures, args.goal == "success", props, bound)
-    result = explore(program, options, budget, check, chooser, inputs)
+    timeless = unobserved(loaded, bool(props and props.left_within))
+    result = explore(program, options, budget, check, chooser, inputs, timeless)
     out = args.out or args.file.with_name(args.file.stem + ".ce.jsonl")
     verdict: dict[str, Any] = {
         "verdict": "ok" if result.exhausted else "bounded",

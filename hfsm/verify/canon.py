@@ -54,8 +54,11 @@ class Keys:
     """Keys of engines: `shared` numbers the objects every state shares (by id); with `relative`,
     ticks are written as distances from the engine's tick (the tick itself left out)."""
 
-    def __init__(self, shared: dict[int, int], relative: bool = True) -> None:
+    def __init__(
+        self, shared: dict[int, int], relative: bool = True, unobserved: frozenset[str] = _NOTHING
+    ) -> None:
         self.shared = shared
+        self.unobserved = unobserved  # a frame's times that nothing reads (`build.unobserved`)
         self.relative = relative
         self.layouts: dict[type, Layout] = {}
         self.now = 0
@@ -198,6 +201,8 @@ class Keys:
             own = base.__dict__.get("__slots__", ())
             slots.extend([own] if isinstance(own, str) else own)
         skipped = SKIPPED.get(cls.__name__, _NOTHING)
+        if cls.__name__ == "Frame":
+            skipped = skipped | self.unobserved
         ticks = TICKS.get(cls.__name__, _NOTHING) | {"deadline"} if self.relative else _NOTHING
         kept = tuple(s for s in slots if s not in skipped and s != "__dict__")
         found = self.layouts[cls] = (kept, skipped, ticks)

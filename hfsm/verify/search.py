@@ -75,10 +75,12 @@ def explore(
     check: Check,
     chooser: Chooser,
     inputs: dict[str, Any],
+    unobserved: frozenset[str] = frozenset(),
 ) -> Outcome:
-    """Search from tick 0; `program`'s stand-ins must ask `chooser`."""
+    """Search from tick 0; `program`'s stand-ins must ask `chooser`. `unobserved`: a frame's times
+    that nothing reads (`build.unobserved`), left out of keys."""
     given = Given(inputs)
-    search = _Search(program, budget, check, chooser, given)
+    search = _Search(program, budget, check, chooser, given, unobserved)
     threshold = gc.get_threshold()
     gc.collect()
     gc.freeze()  # the program and everything loaded before: never scanned again while states churn
@@ -93,7 +95,13 @@ def explore(
 
 class _Search:
     def __init__(
-        self, program: Program, budget: Budget, check: Check, chooser: Chooser, given: Given
+        self,
+        program: Program,
+        budget: Budget,
+        check: Check,
+        chooser: Chooser,
+        given: Given,
+        unobserved: frozenset[str] = frozenset(),
     ) -> None:
         self.started = time.perf_counter()
         self.budget = budget
@@ -101,7 +109,7 @@ class _Search:
         self.chooser = chooser
         shared = shared_objects([program, chooser, program.registry, _RNG, given])
         self.snaps = Snapshots(shared)
-        self.key = Keys(shared_numbers(shared))
+        self.key = Keys(shared_numbers(shared), unobserved=unobserved)
         self.result = Outcome()
         self.nodes: list[_Node] = []
         self.seen: dict[bytes, int] = {}  # a state's key: the latest tick it was explored at

@@ -13,8 +13,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from verify_run import DATA, verify
 
+from hfsm.load import load
 from hfsm.runtime.agent import Frame
 from hfsm.verify import search, snapshot
+from hfsm.verify.build import unobserved
 from hfsm.verify.canon import TICKS, Keys
 from hfsm.verify.choices import Chooser
 from hfsm.verify.step import next_state
@@ -203,3 +205,10 @@ def test_a_situation_met_again_later_is_explored_again(
     assert "still running at the bound (5 s)" in verdict["stderr"]
     code, verdict = verify(capsys, DATA / "spin.yaml", "--param", "laps=0", out=tmp_path / "ok.jsonl")
     assert (code, verdict["verdict"], verdict["exhausted"]) == (0, "ok", True)
+
+
+def test_a_frames_times_are_left_out_of_keys_only_where_nothing_reads_them() -> None:
+    spin = load([DATA / "spin.yaml"])
+    assert unobserved(spin, False) == {"started", "entered"}
+    assert unobserved(spin, True) == {"started"}  # a `left_within` property reads when it was entered
+    assert "entered" not in unobserved(load([DATA / "watch_join.yaml"], libs=[DATA]), False)  # state.time
