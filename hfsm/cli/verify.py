@@ -44,6 +44,12 @@ def build_parser() -> argparse.ArgumentParser:
     )
     p.add_argument("--max-states", type=_count, default=1_000_000, metavar="N", help="stop after N states")
     p.add_argument("--max-seconds", type=_seconds, metavar="S", help="stop after S seconds of search")
+    p.add_argument(
+        "--keys",
+        choices=("bytes", "values"),
+        default="bytes",
+        help="a state's key: its copy's bytes (default), or its values with times relative (merges more)",
+    )
     p.add_argument("--goal", choices=["success"], help="every agent that does not fail ends in no failure")
     p.add_argument("--props", type=Path, metavar="FILE", help="properties to prove (docs/VERIFY.md)")
     p.add_argument(
@@ -129,7 +135,7 @@ def _main(args: argparse.Namespace) -> int:
     budget.max_seconds = args.max_seconds or budget.max_seconds
     failures = top.model.failure_outcomes
     check = Properties(failures, args.goal == "success", props, bound)
-    timeless = unobserved(loaded, bool(props and props.left_within))
+    timeless = unobserved(loaded, bool(props and props.left_within)) if args.keys == "values" else None
     result = explore(program, options, budget, check, chooser, inputs, timeless)
     out = args.out or args.file.with_name(args.file.stem + ".ce.jsonl")
     verdict: dict[str, Any] = {

@@ -22,7 +22,7 @@ from hfsm.runtime.run import RunOptions
 from hfsm.verify.canon import Keys
 from hfsm.verify.choices import Choice, Chooser
 from hfsm.verify.radio import ChoosingWorld, Given
-from hfsm.verify.snapshot import Snapshots, shared_numbers, shared_objects
+from hfsm.verify.snapshot import Snapshots, digest, shared_numbers, shared_objects
 from hfsm.verify.step import Ended, first_state, next_state
 
 # A property looked at after each tick: a violation as (kind, agent, text), or None.
@@ -31,7 +31,7 @@ Check = Callable[[Engine, "Ended | None"], "tuple[str, str, str] | None"]
 
 _RNG = random.Random(0)
 GC_YOUNG = 100_000  # allocations between two young collections while searching (CPython's: 700)
-LIVE = 20_000  # states queued as engines, not only bytes: the first successor runs on it, unloaded
+LIVE = 20_000  # with keys by value, states queued as engines too: the first successor runs on it
 
 
 @dataclass
@@ -75,10 +75,11 @@ def explore(
     check: Check,
     chooser: Chooser,
     inputs: dict[str, Any],
-    unobserved: frozenset[str] = frozenset(),
+    unobserved: frozenset[str] | None = None,
 ) -> Outcome:
-    """Search from tick 0; `program`'s stand-ins must ask `chooser`. `unobserved`: a frame's times
-    that nothing reads (`build.unobserved`), left out of keys."""
+    """Search from tick 0; `program`'s stand-ins must ask `chooser`. A state's key is the hash of
+    its copy's bytes, or with `unobserved` (a frame's times that nothing reads, `build.unobserved`)
+    written by value (`canon.Keys`, docs/VERIFY.md)."""
     given = Given(inputs)
     search = _Search(program, budget, check, chooser, given, unobserved)
     threshold = gc.get_threshold()
@@ -101,7 +102,7 @@ class _Search:
         check: Check,
         chooser: Chooser,
         given: Given,
-        unobserved: frozenset[str] = frozenset(),
+        unobserved: frozenset[str] | None = None,
     ) -> None:
         self.started = time.perf_counter()
         self.budget = budget
@@ -109,7 +110,8 @@ class _Search:
         self.chooser = chooser
         shared = shared_objects([program, chooser, program.registry, _RNG, given])
         self.snaps = Snapshots(shared)
-        self.key = Keys(shared_numbers(shared), unobserved=unobserved)
+        self.key = None if unobserved is None else Keys(shared_numbers(shared), unobserved=unobserved)
+        self.live_cap = 0 if self.key is None else LIVE  # a copy's bytes are no key once run again
         self.result = Outcome()
         self.nodes: list[_Node] = []
         self.seen: dict[bytes, int] = {}  # a state's key: the latest tick it was explored at
@@ -160,15 +162,20 @@ class _Search:
         if ended is not None or engine.running == 0:
             self.ends += 1
             return True
-        key = self.key(engine)
+        if self.key is None:
+            data = self.snaps.dump(engine)
+            key = digest(data)
+        else:
+            key = self.key(engine)
         explored = self.seen.get(key)
         if explored is not None and explored >= engine.tick:
             return True  # the same situation, as late or later: its runs cover this one's (docs/VERIFY.md)
         self.seen[key] = engine.tick
         self.explored += 1
-        data = self.snaps.dump(engine)
+        if self.key is not None:
+            data = self.snaps.dump(engine)
         self.nodes.append(_Node(parent, made))
-        if self.live < LIVE:
+        if self.live < self.live_cap:
             self.live += 1
             self.queue.append((len(self.nodes) - 1, data, engine))
         else:

@@ -32,7 +32,7 @@ class _Unmerged(Keys):
 def test_two_paths_to_one_situation_are_explored_once(
     capsys: pytest.CaptureFixture[str], tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    args = ("--stand-in", "pick")
+    args = ("--stand-in", "pick", "--keys", "values")
     code, merged = verify(capsys, DATA / "fork.yaml", *args, out=tmp_path / "ce.jsonl")
     assert (code, merged["exhausted"]) == (0, True)
     # tick 0: `pick` ends left, or right (2 states); both enter `settle` in tick 1 (1 state, merged);
@@ -43,23 +43,32 @@ def test_two_paths_to_one_situation_are_explored_once(
     assert (code, apart["states"]) == (0, 6)
 
 
-COUNTS = [  # states explored; in brackets what the pickle-hashed search before canon.Keys explored
-    ("handshake", ["--agents", "a,b", "--loss", "1", "--fail", "1"], 689),  # (847)
-    ("quorum", ["--agents", "a,b,c", "--goal", "success", "--loss", "1", "--fail", "1"], 211),  # (255)
-    ("ask_until_answered", ["--agents", "a,b", "--goal", "success", "--loss", "1"], 11),  # (14)
-    ("watch_join", ["--goal", "success"], 20),  # (20)
+COUNTS = [  # states explored with keys as bytes (as before keys by value existed), and by value
+    ("handshake", ["--agents", "a,b", "--loss", "1", "--fail", "1"], 847, 689),
+    ("quorum", ["--agents", "a,b,c", "--goal", "success", "--loss", "1", "--fail", "1"], 255, 211),
+    ("ask_until_answered", ["--agents", "a,b", "--goal", "success", "--loss", "1"], 14, 11),
+    ("watch_join", ["--goal", "success"], 20, 20),
 ]
 
 
-@pytest.mark.parametrize(("name", "args", "states"), COUNTS, ids=[c[0] for c in COUNTS])
+@pytest.mark.parametrize(("name", "args", "as_bytes", "by_value"), COUNTS, ids=[c[0] for c in COUNTS])
 def test_the_state_count_of_a_small_machine_is_pinned(
-    capsys: pytest.CaptureFixture[str], tmp_path: Path, name: str, args: list[str], states: int
+    capsys: pytest.CaptureFixture[str],
+    tmp_path: Path,
+    name: str,
+    args: list[str],
+    as_bytes: int,
+    by_value: int,
 ) -> None:
-    """Fewer than a search hashing pickles: its bytes told apart states that differ only in caches
-    (a frame's expression scope made or not, statistics, whether the trace showed the vars), in
-    which equal strings were one object, or in the absolute tick (docs/VERIFY.md, *States*)."""
+    """By value, fewer: a copy's bytes tell apart states that differ only in caches (a frame's
+    expression scope made or not, statistics, whether the trace showed the vars), or in which equal
+    strings are one object (docs/VERIFY.md, *States*)."""
     code, verdict = verify(capsys, DATA / f"{name}.yaml", *args, out=tmp_path / "ce.jsonl")
-    assert (code, verdict["exhausted"], verdict["states"]) == (0, True, states)
+    assert (code, verdict["exhausted"], verdict["states"]) == (0, True, as_bytes)
+    code, verdict = verify(
+        capsys, DATA / f"{name}.yaml", *args, "--keys", "values", out=tmp_path / "ce.jsonl"
+    )
+    assert (code, verdict["exhausted"], verdict["states"]) == (0, True, by_value)
 
 
 def _states(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> tuple[list[Any], Any]:
@@ -78,6 +87,7 @@ def _states(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> tuple[list[An
         patch.setattr(search._Search, "visit", recording)
         patch.setattr(snapshot.Snapshots, "close", lambda self: None)
         args = ["--agents", "a,b", "--loss", "1", "--fail", "1", "--delay", "1", "--max-states", "300"]
+        args += ["--keys", "values"]
         verify(capsys, DATA / "handshake.yaml", *args, out=tmp_path / "ce.jsonl")
     return found, kept["search"]  # its snapshots left open: the tests below load them
 
@@ -200,7 +210,8 @@ def test_a_situation_met_again_later_is_explored_again(
 ) -> None:
     """`spin` comes back to the same situation every second, later each time: merged into the
     first, its run would seem to end nowhere; explored again, it reaches the bound."""
-    code, verdict = verify(capsys, DATA / "spin.yaml", "--bound", "5", out=tmp_path / "ce.jsonl")
+    args = ("--bound", "5", "--keys", "values")
+    code, verdict = verify(capsys, DATA / "spin.yaml", *args, out=tmp_path / "ce.jsonl")
     assert (code, verdict["kind"]) == (1, "hang")
     assert "still running at the bound (5 s)" in verdict["stderr"]
     code, verdict = verify(capsys, DATA / "spin.yaml", "--param", "laps=0", out=tmp_path / "ok.jsonl")
