@@ -1,8 +1,9 @@
 """States a second of hfsm-verify on the paper's two-robot handshakes, with stand-ins, and where the
 time goes (keys of states, copying states in and out as bytes, running the engine's ticks).
 
-Rewrites the bench_verify section of docs/VERIFY.md (nothing else in it).
-Usage: nice -n 15 .venv/bin/python tools/bench_verify.py [--no-doc] [--runs N]
+Rewrites the bench_verify section of docs/VERIFY.md (bench_verify_values with --keys values; nothing
+else in it).
+Usage: nice -n 15 .venv/bin/python tools/bench_verify.py [--no-doc] [--runs N] [--keys bytes|values]
 """
 
 from __future__ import annotations
@@ -36,6 +37,8 @@ CASES: list[tuple[str, list[str]]] = [
       "--fail", "1"]),
     ("call_off, --loss 1 --fail 1", [str(M / "call_off.yaml"), *PAIR, "--param", "cycle=1", "--loss", "1",
                                      "--fail", "1"]),
+    ("move_furniture, --loss 1 --fail 1, its first 3,000 states",
+     [str(M / "move_furniture.yaml"), *PAIR, "--loss", "1", "--fail", "1", "--max-states", "3000"]),
 ]  # fmt: skip
 
 
@@ -105,10 +108,11 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--no-doc", action="store_true", help="print only; leave docs/VERIFY.md")
     parser.add_argument("--runs", type=int, default=5, help="runs of each case (medians are shown)")
+    parser.add_argument("--keys", choices=("bytes", "values"), default="bytes", help="hfsm-verify's --keys")
     args = parser.parse_args()
     rows = []
     for name, case in CASES:
-        runs = [one(case) for _ in range(args.runs)]
+        runs = [one([*case, "--keys", args.keys]) for _ in range(args.runs)]
         v = runs[0]
         spent = statistics.median(r["seconds"] or 1e-9 for r in runs)
         rate = statistics.median(r["states"] / (r["search_cpu"] or 1e-9) for r in runs)
@@ -128,8 +132,9 @@ def main() -> int:
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
     lines = [
         "",
-        f"`nice -n 15 .venv/bin/python tools/bench_verify.py` on {platform.python_implementation()} "
-        f"{platform.python_version()}, {os.cpu_count()} cores, load average {load:.1f} when it ended:",
+        f"`nice -n 15 .venv/bin/python tools/bench_verify.py --keys {args.keys}` on "
+        f"{platform.python_implementation()} {platform.python_version()}, {os.cpu_count()} cores, "
+        f"load average {load:.1f} when it ended:",
         "",
         "| case | verdict | states | seconds (median) | states/s | CPU-s of the search (median) "
         "| states/CPU-s of the search: median (each run) "
@@ -139,7 +144,8 @@ def main() -> int:
         "",
     ]
     if not args.no_doc:
-        write_section(ROOT / "docs" / "VERIFY.md", "bench_verify", lines)
+        section = "bench_verify" if args.keys == "bytes" else "bench_verify_values"
+        write_section(ROOT / "docs" / "VERIFY.md", section, lines)
     return 0
 
 
