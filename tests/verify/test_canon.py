@@ -223,3 +223,15 @@ def test_a_frames_times_are_left_out_of_keys_only_where_nothing_reads_them() -> 
     assert unobserved(spin, False) == {"started", "entered"}
     assert unobserved(spin, True) == {"started"}  # a `left_within` property reads when it was entered
     assert "entered" not in unobserved(load([DATA / "watch_join.yaml"], libs=[DATA]), False)  # state.time
+
+
+def test_the_inputs_values_are_shared_by_states_not_copied(reached: Reached) -> None:
+    datas, found = reached
+    engine = found.snaps.load(datas[-1])
+    given = engine.world.given
+    named = [n for n in given.values if "_" in n]  # names no state holds otherwise (`start` is in `started`)
+    assert named and all(name.encode() not in data for name in named for data in datas)
+    assert found.snaps.load(datas[0]).world.given is given
+    for name, value in given.values.items():
+        if isinstance(value, list | dict):
+            assert engine.world.read_input("a", name, 0) is not value  # each state's own to change
