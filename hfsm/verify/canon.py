@@ -25,14 +25,19 @@ SKIPPED: dict[str, frozenset[str]] = {
     "Frame": frozenset({"_scope", "_prefix", "text", "vars_shown", "agent", "up"}),
     "Region": frozenset({"owner"}),
     "Agent": frozenset({"stats", "entries", "clock", "rng", "robot", "inputs"}),
-    "Team": frozenset({"engine"}),
+    "Team": frozenset({"engine", "by_name"}),
     "Engine": frozenset({"_time", "spans", "records", "trace", "breaks", "by_name", "dt"}),
+    "RunClock": frozenset({"_time", "spans", "dt"}),
+    "Ledger": frozenset({"records"}),
+    "Arcs": frozenset({"records"}),
+    "Mailbox": frozenset({"by_name"}),
     "ChoosingWorld": frozenset({"decider", "n", "posted", "tick", "given", "delay", "flying"}),
     "AgentResult": frozenset({"time"}),
 }
 # Attributes that hold a tick (besides every `deadline`): written as a distance from the engine's.
 TICKS: dict[str, frozenset[str]] = {
     "Engine": frozenset({"tick"}),
+    "RunClock": frozenset({"tick"}),
     "Frame": frozenset({"state_deadline", "retry_at", "entered", "started"}),
     "Barrier": frozenset({"entered", "sent"}),
     "Message": frozenset({"sent_tick"}),
