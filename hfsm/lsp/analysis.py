@@ -21,6 +21,7 @@ from hfsm.library import Library, MachineFile
 from hfsm.load import check_files, world_of
 from hfsm.registry import Registry
 from hfsm.spec import BehaviourSpec
+from hfsm.yamlio import collector_paused
 from hfsm.world import NO_INPUTS, WORLDS_GROUP, InputSpec, NullWorld
 
 
@@ -122,7 +123,8 @@ class Workspace:
 
     def analyse(self, path: Path) -> Analysis:
         path = path.resolve()
-        analysis = self._test_file(path) if is_test_file(path) else self._machine_file(path)
+        with collector_paused():  # a check builds many objects and frees few, as `load` does
+            analysis = self._test_file(path) if is_test_file(path) else self._machine_file(path)
         self.analyses[path] = analysis
         if analysis.machine is not None:
             self.last_good[path] = analysis.machine
