@@ -71,7 +71,9 @@ def check_expression(
 
 
 @lru_cache(maxsize=8192)
-def _compile_problem(source: str, params: tuple[str, ...], vars: tuple[str, ...] | None) -> ExprSyntaxError | None:
+def _compile_problem(
+    source: str, params: tuple[str, ...], vars: tuple[str, ...] | None
+) -> ExprSyntaxError | None:
     """Why the expression does not compile with these names (None: it does). Kept: an editor's
     server checks the same expressions again on every change."""
     try:

@@ -21,8 +21,8 @@ from hfsm.library import Library, MachineFile
 from hfsm.load import check_files, world_of
 from hfsm.registry import Registry
 from hfsm.spec import BehaviourSpec
-from hfsm.yamlio import collector_paused
 from hfsm.world import NO_INPUTS, WORLDS_GROUP, InputSpec, NullWorld
+from hfsm.yamlio import collector_paused
 
 
 def _disk_text(path: Path) -> str | None:

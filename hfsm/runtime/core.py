@@ -26,7 +26,12 @@ class FatalError(Exception):
     """Ends the whole run at once (exit 1): an error at the top, too many entries in one tick."""
 
     def __init__(
-        self, agent: str, message: str, traceback: str = "", origin: str = "", where: tuple[str | int, ...] = ()
+        self,
+        agent: str,
+        message: str,
+        traceback: str = "",
+        origin: str = "",
+        where: tuple[str | int, ...] = (),
     ) -> None:
         super().__init__(message)
         self.agent = agent
