@@ -112,6 +112,11 @@ class Library:
         self._failed: set[Path] = set()  # files that could not be loaded, reported once
 
     @property
+    def unloaded(self) -> set[Path]:
+        """The files that were called but could not be loaded (resolved paths)."""
+        return set(self._failed)
+
+    @property
     def search(self) -> list[Path]:
         """Every folder, in a user file's order (after its own folder)."""
         return _unique([*self.users, *self.libraries])

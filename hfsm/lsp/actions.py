@@ -34,8 +34,8 @@ def quick_fixes(
     """`inward`: a diagnostic's range (in the client's units) in characters, to read what it covers."""
     actions: list[lsp.CodeAction] = []
     for diagnostic in diagnostics:
-        if diagnostic.source != "hfsm":
-            continue
+        if diagnostic.source != "hfsm" or diagnostic.related_information:
+            continue  # another tool's, or a callee's errors (their fixes are in the callee's file)
         old = _text(lines, inward(diagnostic.range))
         for new in suggestions(diagnostic.message):
             if old[:1] in "'\"" and old[:1] and not new.startswith(old[:1]):

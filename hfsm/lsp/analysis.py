@@ -73,10 +73,12 @@ class Analysis:
         return sorted(names)
 
     def files(self) -> set[Path]:
-        """The files this check read: the document and every machine it calls, at any depth."""
+        """The files this check read: the document and every machine it calls, at any depth (those
+        that could not be loaded too)."""
         if self.library is None:
             return {self.path}
-        return {self.path} | {m.path.resolve() for m in self.library.machines.values()}
+        loaded = {m.path.resolve() for m in self.library.machines.values()}
+        return {self.path} | loaded | self.library.unloaded
 
 
 class Workspace:

@@ -20,6 +20,7 @@ from pygls.uris import from_fs_path, to_fs_path
 from hfsm.library import MachineFile
 from hfsm.lsp import actions, completion, diagnostics, hover, navigation
 from hfsm.lsp.analysis import Analysis, Settings, Workspace, is_test_file
+from hfsm.lsp.callees import callee_errors
 from hfsm.lsp.units import Units
 
 _OURS = re.compile(r"\b(states|outcomes|tests)\s*:")
@@ -69,9 +70,13 @@ class HfsmServer(LanguageServer):
     def publish(self, path: Path, analysis: Analysis) -> None:
         lines = self.lines(path)
         found = [diagnostics.to_diagnostic(f, lines) for f in diagnostics.of_file(analysis.findings, path)]
+        for c in callee_errors(analysis):
+            found.append(diagnostics.callee_diagnostic(c.at, c.name, c.errors, self.lines))
         units = self.units
         for diagnostic in found:
             diagnostic.range = units.range_out(lines, diagnostic.range)
+            for related in diagnostic.related_information or ():
+                related.location.range = self.range_out(related.location.uri, related.location.range)
         self.text_document_publish_diagnostics(
             lsp.PublishDiagnosticsParams(uri=from_fs_path(str(path)) or "", diagnostics=found)
         )
