@@ -18,10 +18,11 @@ from pygls.lsp.server import LanguageServer
 from pygls.uris import from_fs_path, to_fs_path
 
 from hfsm.library import MachineFile
-from hfsm.lsp import actions, completion, diagnostics, hover, navigation
+from hfsm.lsp import actions, completion, diagnostics, hover, navigation, testfile
 from hfsm.lsp.analysis import Analysis, Settings, Workspace, is_test_file
 from hfsm.lsp.callees import callee_errors
 from hfsm.lsp.units import Units
+from hfsm.yamlio import Document
 
 _OURS = re.compile(r"\b(states|outcomes|tests)\s*:")
 
@@ -81,6 +82,15 @@ class HfsmServer(LanguageServer):
             lsp.PublishDiagnosticsParams(uri=from_fs_path(str(path)) or "", diagnostics=found)
         )
 
+    def test_context(self, uri: str) -> tuple[Analysis, Document, Sequence[str]] | None:
+        """A test file's latest check, its latest well-read text, and its lines now."""
+        path = _path(uri)
+        analysis = self.state.analyses.get(path)
+        doc = self.state.last_tests.get(path)
+        if not is_test_file(path) or analysis is None or doc is None:
+            return None
+        return analysis, doc, self.lines(path)
+
     def context(self, uri: str) -> tuple[Analysis, MachineFile, Sequence[str]] | None:
         """The document's latest check, its latest well-read machine, and its lines now."""
         path = _path(uri)
@@ -122,6 +132,9 @@ def build(workspace: Workspace | None = None) -> HfsmServer:  # noqa: C901 (one 
     @server.feature(lsp.TEXT_DOCUMENT_HOVER)
     def on_hover(ls: HfsmServer, params: lsp.HoverParams) -> lsp.Hover | None:
         uri = params.text_document.uri
+        tests = ls.test_context(uri)
+        if tests is not None:
+            return testfile.hover(*tests, ls.position(uri, params.position))
         found = ls.context(uri)
         return hover.hover(*found, ls.position(uri, params.position)) if found else None
 
@@ -133,7 +146,11 @@ def build(workspace: Workspace | None = None) -> HfsmServer:  # noqa: C901 (one 
             return lsp.CompletionList(is_incomplete=False, items=[])
         machine = ls.state.last_good.get(path)
         lines = ls.lines(path)
-        items = completion.complete(analysis, machine, lines, ls.units.position_in(lines, params.position))
+        pos = ls.units.position_in(lines, params.position)
+        if is_test_file(path):
+            items = testfile.complete(analysis, ls.state.last_tests.get(path), lines, pos)
+        else:
+            items = completion.complete(analysis, machine, lines, pos)
         return lsp.CompletionList(is_incomplete=False, items=items)
 
     @server.feature(lsp.TEXT_DOCUMENT_DEFINITION)
@@ -176,6 +193,14 @@ def build(workspace: Workspace | None = None) -> HfsmServer:  # noqa: C901 (one 
 
 
 def _definition(ls: HfsmServer, uri: str, pos: lsp.Position) -> lsp.Location | None:
+    tests = ls.test_context(uri)
+    if tests is not None:
+        called = testfile.definition_name(tests[1], tests[2], pos)
+        file = _behaviour_file(tests[0], called) if called else None
+        if file is None:
+            return None
+        begin = lsp.Position(file[1], 0)
+        return lsp.Location(from_fs_path(str(file[0])) or "", lsp.Range(begin, begin))
     found = ls.context(uri)
     if found is None:
         return None
