@@ -19,6 +19,7 @@ from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import Finding, UserError
 from hfsm.library import PROJECT_MACHINES, SUFFIXES, Library, MachineFile, shown
 from hfsm.load import check_files, world_of
+from hfsm.lsp.reparse import Reparser
 from hfsm.registry import Registry
 from hfsm.spec import BehaviourSpec
 from hfsm.world import NO_INPUTS, WORLDS_GROUP, InputSpec, NullWorld
@@ -92,6 +93,7 @@ class Workspace:
         self.last_good: dict[Path, MachineFile] = {}  # the latest machine read of each document
         self.last_tests: dict[Path, Document] = {}  # the latest test file read of each document
         self._registry = registry
+        self.reparser = Reparser()  # a changed document read again from what changed
 
     @cached_property
     def registry(self) -> Registry:
@@ -143,7 +145,13 @@ class Workspace:
             registry = registry.for_world(self.settings.world)
         try:
             library, _, findings = check_files(
-                [path], self.settings.libs, registry, self.settings.world, self.world_inputs, self.texts
+                [path],
+                self.settings.libs,
+                registry,
+                self.settings.world,
+                self.world_inputs,
+                self.texts,
+                self.reparser.parse,
             )
         except UserError as err:
             return Analysis(path, err.findings, None, registry, None)
