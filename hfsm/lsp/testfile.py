@@ -4,8 +4,9 @@ Completion: the machines in reach after `machine:`; its params as keys of `param
 agent's `agent_params:`); its outcomes after `outcome:` in `expect:`; the agents of the case after
 `agent:`, `to:` and as keys of `agent_params:`, `by_agent:` and `expect: agents:`; the behaviours it
 calls as keys of `stand_ins:`, `calls:` and `called_with:`, and a stand-in's outcomes after its
-`outcome:`. Hover: the machine under test, a stand-in's behaviour, an outcome. What the cursor is
-in is read from the text before it, as in machine files (`hfsm.lsp.completion`).
+`outcome:`; outputs as keys of `outputs:` (a stand-in's, or the machine's in `expect:`). Hover: the
+machine under test, a stand-in's behaviour, an outcome, a param. What the cursor is in is read from
+the text before it, as in machine files (`hfsm.lsp.completion`).
 """
 
 from __future__ import annotations
@@ -176,6 +177,10 @@ def complete(
         return [_item(a, Kind.Variable, "agent") for a in _agents(doc, case)]
     if last in ("stand_ins", "calls", "called_with"):
         return [_item(n, Kind.Function, "called", analysis.specs.get(n)) for n in _called(analysis, top)]
+    if last == "outputs":
+        spec = _stand_in(analysis, keys) if "stand_ins" in keys else top
+        outputs = sorted(spec.outputs or ()) if spec is not None else []
+        return [_item(o, Kind.Field, f"output of {spec.name}" if spec else "output") for o in outputs]
     if len(keys) >= 2 and keys[-2] == "called_with":
         spec = analysis.specs.get(keys[-1])
         return [_item(p.name, Kind.Property, p.type) for p in (spec.params.values() if spec else [])]

@@ -24,7 +24,7 @@ tests:
   gets_it:
     params: {limit: 1}
     stand_ins:
-      fetch: {after: 1, outcome: got}
+      fetch: {after: 1, outcome: got, outputs: {thing: 1}}
     agent_params: {a: {limit: 2}}
     expect: {outcome: done, agents: {a: {outcome: done}}}
 """
@@ -83,6 +83,7 @@ async def test_completion_in_a_test_file_offers_what_fits(client: LanguageClient
     assert await _labels(client, test_file, *_after(4, "params: {")) == ["limit"]
     assert await _labels(client, test_file, 6, 6) == ["fetch"]  # a key of stand_ins: what it calls
     assert await _labels(client, test_file, *_after(6, "outcome: ")) == ["got", "lost"]
+    assert await _labels(client, test_file, *_after(6, "outputs: {")) == ["thing"]
     assert await _labels(client, test_file, *_after(8, "{outcome: ")) == ["done", "failed"]
     assert await _labels(client, test_file, *_after(8, "agents: {")) == ["a", "b"]
     assert await _labels(client, test_file, *_after(8, "agents: {a: {outcome: ")) == ["done", "failed"]
