@@ -133,3 +133,45 @@ async def test_the_server_reports_what_check_prints_for_every_malformed_file(
         client.text_document_did_close(lsp.DidCloseTextDocumentParams(lsp.TextDocumentIdentifier(uri)))
     assert differ == []
     assert callers >= 1  # the corpus has a file whose callees have errors
+
+
+def _commented(text: str) -> str | None:
+    """The text with a comment after its first state's key (an edit inside one state), if it has one."""
+    lines = text.split("\n")
+    if "states:" not in lines:
+        return None
+    for i in range(lines.index("states:") + 1, len(lines)):
+        if lines[i].startswith("  ") and lines[i][2:3].isalpha() and lines[i].rstrip().endswith(":"):
+            lines[i] = lines[i].rstrip() + "  # edited"
+            return "\n".join(lines)
+    return None
+
+
+@pytest.mark.asyncio(loop_scope="module")
+async def test_an_edit_inside_one_state_keeps_every_diagnostic(client: LanguageClient) -> None:
+    """What the server reads again from the changed state alone (hfsm.lsp.reparse) gives the same
+    diagnostics as the whole file read: a comment added to a state changes none of them."""
+    edited = 0
+    for path in MALFORMED:
+        text = path.read_text(encoding="utf-8")
+        changed = _commented(text)
+        if changed is None:
+            continue
+        uri = path.resolve().as_uri()
+        client.diagnostics.pop(uri, None)
+        client.text_document_did_open(lsp.DidOpenTextDocumentParams(lsp.TextDocumentItem(uri, "yaml", 1, text)))
+        while uri not in client.diagnostics:
+            await asyncio.wait_for(client.wait_for_notification(lsp.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS), 60)
+        before = client.diagnostics.pop(uri)
+        client.text_document_did_change(
+            lsp.DidChangeTextDocumentParams(
+                lsp.VersionedTextDocumentIdentifier(version=2, uri=uri),
+                [lsp.TextDocumentContentChangeWholeDocument(changed)],
+            )
+        )
+        while uri not in client.diagnostics:
+            await asyncio.wait_for(client.wait_for_notification(lsp.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS), 60)
+        assert client.diagnostics[uri] == before, path.name
+        edited += 1
+        client.text_document_did_close(lsp.DidCloseTextDocumentParams(lsp.TextDocumentIdentifier(uri)))
+    assert edited >= 50  # most of them read again from the changed state alone
