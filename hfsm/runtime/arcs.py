@@ -154,7 +154,7 @@ class Arcs:
         `scope:` read (REFERENCE.md#scopes: what it runs is under it until the state is left); or the error
         either gave, taken once the state is entered."""
         if state.timer is not None:
-            ticks = self.timers.ticks(state.timer, frame)
+            ticks = self.timers.ticks(state.timer, frame, (*state.at, "timer"))
             if ticks.__class__ is Event:
                 return ticks
             frame.state_deadline = self.clock.tick + ticks  # type: ignore[operator]
@@ -167,14 +167,14 @@ class Arcs:
 
     @staticmethod
     def _choose(frame: Frame, state: RState) -> Event:
-        for condition, text, target in state.branches:
+        for i, (condition, text, target) in enumerate(state.branches):
             if condition is None:
                 return Event("else", goto=target)
             try:
                 if condition(frame.scope):
                     return Event(text, goto=target)
             except ExprValueError as exc:
-                return Event("error", error=f"in '{text}': {exc}")
+                return Event("error", error=f"in '{text}': {exc}", where=(*state.at, "choose", i, "if"))
         raise AssertionError("a checked choice ends with else")
 
     @staticmethod
@@ -187,7 +187,7 @@ class Arcs:
             try:
                 holds = watch.condition(frame.scope)
             except ExprValueError as exc:
-                return Event("error", error=f"watch '{watch.text}': {exc}")
+                return Event("error", error=f"watch '{watch.text}': {exc}", where=watch.where)
             if holds and watch.target is not state:
                 return Event(watch.text, goto=watch.target)
         return None

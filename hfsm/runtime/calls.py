@@ -13,7 +13,7 @@ from hfsm.runtime.parts import ArcsPart
 from hfsm.runtime.primitives import PrimitiveActivity, RunContext
 from hfsm.runtime.program import RMachine, resolve_params
 from hfsm.runtime.states import Callee
-from hfsm.runtime.timers import Timers
+from hfsm.runtime.timers import Timers, Where
 
 
 def save(frame: Frame, names: tuple[tuple[str, str], ...], outputs: dict[str, Any]) -> None:
@@ -36,10 +36,13 @@ class Calls:
     @staticmethod
     def params(callee: Callee, frame: Frame) -> dict[str, Any] | Event:
         frame.in_with = True  # `scope.*` in a `with` reads the state's own scope (docs/REFERENCE.md#scopes)
+        given = {}
+        key = ""
         try:
-            given = {k: v.fn(frame.scope) for k, v in callee.with_.items()}
+            for key, value in callee.with_.items():
+                given[key] = value.fn(frame.scope)
         except ExprValueError as exc:
-            return Event("error", error=str(exc))
+            return Event("error", error=str(exc), where=(*callee.at, "with", key, *exc.where))
         finally:
             frame.in_with = False
         params = resolve_params(callee.spec, given)  # type: ignore[arg-type]
@@ -120,7 +123,7 @@ class Calls:
         hand it on."""
         state = frame.state
         while event.name in state.retry_on:
-            times = self._count_of(state.retry_times, frame, "times")
+            times = self._count_of(state.retry_times, frame, "times", (*state.at, "retry", "times"))
             if times.__class__ is Event:
                 return times
             if frame.attempt > times:  # type: ignore[operator]
@@ -135,7 +138,7 @@ class Calls:
                     attempt=frame.attempt + 1,
                     outcome=event.name,
                 )
-            delay = self.timers.delay(state.retry_delay, frame)
+            delay = self.timers.delay(state.retry_delay, frame, (*state.at, "retry", "delay"))
             if delay.__class__ is Event:
                 return delay
             if delay:
@@ -168,13 +171,14 @@ class Calls:
                 self.clock.wake = True  # a watch may read what the attempt saved
 
     @staticmethod
-    def _count_of(times: Any, frame: Frame, what: str) -> int | Event:
+    def _count_of(times: Any, frame: Frame, what: str, where: Where) -> int | Event:
         if times.__class__ is int:
             return int(times)
         try:
             value = times(frame.scope)
         except ExprValueError as exc:
-            return Event("error", error=f"retry {what}: {exc}")
+            return Event("error", error=f"retry {what}: {exc}", where=where)
         if value.__class__ is not int or value <= 0:
-            return Event("error", error=f"retry times must be a positive whole number, not {value!r}")
+            message = f"retry times must be a positive whole number, not {value!r}"
+            return Event("error", error=message, where=where)
         return int(value)

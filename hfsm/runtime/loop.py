@@ -122,6 +122,6 @@ class Loop:
             agent.result = AgentResult(None, {}, self.clock.time)
             self.ledger.emit(agent, [agent.top], "exit", outcome=None)
             origin = event.origin or agent.top
-            raise FatalError(agent.name, f"{origin}: {event.error}", event.traceback, origin)
+            raise FatalError(agent.name, f"{origin}: {event.error}", event.traceback, origin, event.where)
         agent.result = AgentResult(event.name, event.outputs or {}, self.clock.time)
         self.ledger.emit(agent, [agent.top], "exit", outcome=event.name)

@@ -14,6 +14,8 @@ from hfsm.runtime.parts import ArcsPart, CallsPart, HoldsPart
 from hfsm.runtime.program import timer_ticks
 from hfsm.spec import is_finite_number, shown
 
+Where = tuple[str | int, ...]  # a path in a machine file
+
 
 class Timers:
     arcs: ArcsPart
@@ -25,27 +27,32 @@ class Timers:
         self.ledger = ledger
         self.cancelling = cancelling
 
-    def ticks(self, timer: Any, frame: Frame) -> int | Event:
+    def ticks(self, timer: Any, frame: Frame, where: Where = ()) -> int | Event:
         if timer.__class__ is int:
             return int(timer)
-        seconds = self.seconds(timer, frame, "timer", "a positive number of seconds", zero=False)
+        takes = "a positive number of seconds"
+        seconds = self.seconds(timer, frame, "timer", takes, zero=False, where=where)
         return seconds if isinstance(seconds, Event) else timer_ticks(seconds, self.clock.dt)
 
     @staticmethod
-    def seconds(expr: Any, frame: Frame, what: str, takes: str, *, zero: bool) -> float | Event:
-        """A span given as an expression, checked: finite, and positive (or zero, if allowed)."""
+    def seconds(
+        expr: Any, frame: Frame, what: str, takes: str, *, zero: bool, where: Where = ()
+    ) -> float | Event:
+        """A span given as an expression, checked: finite, and positive (or zero, if allowed).
+        `where`: the expression's path in the machine file, for an error's position."""
         try:
             seconds = expr(frame.scope)
         except ExprValueError as exc:
-            return Event("error", error=f"{what}: {exc}")
+            return Event("error", error=f"{what}: {exc}", where=(*where, *exc.where) if where else ())
         if not is_finite_number(seconds) or seconds < 0 or (seconds == 0 and not zero):
-            return Event("error", error=f"{what} must be {takes}, not {shown(seconds)}")
+            return Event("error", error=f"{what} must be {takes}, not {shown(seconds)}", where=where)
         return float(seconds)
 
-    def delay(self, delay: Any, frame: Frame) -> int | Event:
+    def delay(self, delay: Any, frame: Frame, where: Where) -> int | Event:
         if delay.__class__ is int:
             return int(delay)
-        seconds = self.seconds(delay, frame, "retry delay", "a number of seconds >= 0", zero=True)
+        takes = "a number of seconds >= 0"
+        seconds = self.seconds(delay, frame, "retry delay", takes, zero=True, where=where)
         return seconds if isinstance(seconds, Event) else max(0, self.clock.span(seconds))
 
     def state_timeout(self, frame: Frame) -> None:
