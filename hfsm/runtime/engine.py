@@ -157,11 +157,8 @@ class Engine(Holds):
                 self.team.receive(message)
                 continue
             agent.mailbox.append(message)
-            if self.trace is not None:
-                path = _first_leaf(agent)
-                self.emit(
-                    agent, path, "receive", message=message.name, sender=message.sender, data=message.data
-                )
+            if self.records is not None:
+                self.records.receive(agent, _first_leaf(agent), message)
 
 
 def _first_leaf(agent: Agent) -> list[str]:
