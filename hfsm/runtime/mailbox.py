@@ -1,0 +1,73 @@
+"""An agent's mailbox: its messages in arrival order, and how many of each name it holds.
+
+Messages nobody takes stay for the rest of the run (docs/REFERENCE.md#messages-between-agents), so a
+long run of a large team holds thousands. Most looks into a mailbox find nothing: the counts answer
+those at once, and only a look that will find a message walks the list.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Collection, Iterable
+from typing import SupportsIndex
+
+from hfsm.primitive import Message
+
+
+class Mailbox(list[Message]):
+    """A list of messages (the engine appends, takes, holds and puts back) that keeps `counts`."""
+
+    def __init__(self, messages: Iterable[Message] = ()) -> None:
+        super().__init__(messages)
+        self.counts: dict[str, int] = {}
+        for message in self:
+            self._count(message.name, 1)
+
+    def _count(self, name: str, change: int) -> None:
+        left = self.counts.get(name, 0) + change
+        if left:
+            self.counts[name] = left
+        else:
+            del self.counts[name]
+
+    def append(self, message: Message) -> None:
+        super().append(message)
+        self._count(message.name, 1)
+
+    def insert(self, index: SupportsIndex, message: Message) -> None:
+        super().insert(index, message)
+        self._count(message.name, 1)
+
+    def pop(self, index: SupportsIndex = -1) -> Message:
+        message = super().pop(index)
+        self._count(message.name, -1)
+        return message
+
+    def __delitem__(self, index: SupportsIndex | slice) -> None:
+        if isinstance(index, slice):
+            raise TypeError("a mailbox deletes one message at a time")
+        self._count(self[index].name, -1)
+        super().__delitem__(index)
+
+    def clear(self) -> None:
+        super().clear()
+        self.counts.clear()
+
+    def take(self, names: Collection[str], prefix: str = "") -> Message | None:
+        """Remove and return the earliest message whose name is in `names`, sent under the scope
+        whose names begin with `prefix`: `scope/name`, or a bare name outside every scope."""
+        counts = self.counts
+        if not prefix:
+            if not any(name in counts for name in names):
+                return None
+            for i, message in enumerate(self):
+                if message.name in names:
+                    return self.pop(i)
+            return None
+        if not any(prefix + name in counts for name in names):
+            return None
+        n = len(prefix)
+        for i, message in enumerate(self):
+            name = message.name
+            if name.startswith(prefix) and name[n:] in names:
+                return self.pop(i)
+        return None
