@@ -149,6 +149,7 @@ class Engine(Holds):
         return ""
 
     def deliver(self, messages: list[Message]) -> None:
+        paths: dict[str, list[str]] = {}  # where each agent runs: the same for all its messages
         for message in messages:
             agent = self.by_name.get(message.to)
             if agent is None or agent.failed is not None:
@@ -158,7 +159,8 @@ class Engine(Holds):
                 continue
             agent.mailbox.append(message)
             if self.records is not None:
-                self.records.receive(agent, _first_leaf(agent), message)
+                path = paths.get(agent.name) or paths.setdefault(agent.name, _first_leaf(agent))
+                self.records.receive(agent, path, message)
 
 
 def _first_leaf(agent: Agent) -> list[str]:
