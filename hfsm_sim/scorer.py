@@ -24,7 +24,7 @@ class Scorer:
         self._names = list(truth.robot_ids)
         self._tables = {t.body for t in truth.tables}
         self._ids = {truth.robot_id(n): n for n in self._names}
-        self._kinds: dict[int, str] = {wall: "wall" for wall in truth.room_bodies.walls}
+        self._kinds: dict[int, str] = dict.fromkeys(truth.room_bodies.walls, "wall")
         self._kinds.update(dict.fromkeys(self._tables, "table"))
         self._kinds.update(dict.fromkeys(self._ids, "robot"))
         self._touching: set[tuple[str, str, str]] = set()

@@ -13,8 +13,15 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from tools.longrun import LOOP, _hfsm_run, _simulated, check_trace, growth, measure  # noqa: E402
-from tools.longrun import Sample  # noqa: E402
+from tools.longrun import (  # noqa: E402
+    LOOP,
+    Sample,
+    _hfsm_run,
+    _simulated,
+    check_trace,
+    growth,
+    measure,
+)
 
 
 def test_a_whole_trace_is_whole(tmp_path: Path) -> None:
