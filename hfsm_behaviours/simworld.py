@@ -160,9 +160,11 @@ class SimWorld:
         return [{"t": round(tick * self.dt, 9), "agent": "world", "path": [], "kind": "pose",
                  **self.world.poses()}]
 
-    def label_sink(self) -> Labels:
-        """A trace sink that labels each robot in the video with its role and current behaviour."""
-        return Labels(self.world.labels)
+    def label_sink(self) -> Labels | None:
+        """A trace sink that labels each robot in the video with its role and current behaviour; None
+        without a video (`--no-video`): then the trace file is the run's only sink, and the engine
+        writes it as text (hfsm.runtime.records.TextRecords, the same bytes for less work)."""
+        return None if self._recorder is None else Labels(self.world.labels)
 
     def failures(self, tick: int) -> Sequence[tuple[str, str]]:
         """The scenario's failures due now (`at:` times and the seeded `rate:` ones), and robots

@@ -153,8 +153,9 @@ def sinks(
     labels) added as asked; and the monitor."""
     extra: list[TraceSink] = []
     label_sink = getattr(world, "label_sink", None)
-    if label_sink is not None and trace is not None:
-        extra.append(label_sink())
+    labels = label_sink() if label_sink is not None and trace is not None else None
+    if labels is not None:  # a world without a video to label has none
+        extra.append(labels)
     monitor = None
     if args.monitor is not None:
         control = Control(args.agent_names, args.breaks)
