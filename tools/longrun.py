@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import shlex
 import signal
 import subprocess
@@ -37,6 +38,7 @@ from tools.docsection import write_section  # noqa: E402
 from tools.room.scenes import room  # noqa: E402
 
 DOC = ROOT / "docs" / "ROBUSTNESS.md"
+ROOM_LENGTH, TARARC_LENGTH = 35 * 60.0, 3600.0  # what the issue asks for
 TARARC = "machines/tararc.yaml"
 LOOP = "tools/tararc/tararc_loop.yaml"  # TARARC round after round, for a run as long as the timer
 RESULTS = ROOT / "docs" / "results"
@@ -47,6 +49,8 @@ class Sample:
     simulated: float  # seconds
     wall: float  # seconds since the child started
     rss_mb: float
+    cpu: float = 0.0  # the child's CPU seconds (user + system) by then; 0: not read
+
 
 
 @dataclass
@@ -62,6 +66,7 @@ class LongRun:
     trace_whole: bool = False
     trace_problem: str = ""
     summary: str = ""
+    length: float = 0.0  # simulated seconds the run was to last
 
 
 def _status_mb(pid: int, key: str) -> float:
@@ -73,6 +78,15 @@ def _status_mb(pid: int, key: str) -> float:
         if line.startswith(key + ":"):
             return int(line.split()[1]) / 1024
     return 0.0
+
+
+def _cpu_seconds(pid: int) -> float:
+    """User and system CPU seconds of a running process (/proc/PID/stat), 0 if it cannot be read."""
+    try:
+        fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    except (OSError, IndexError):
+        return 0.0
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
 def _simulated(line: str) -> float | None:
@@ -124,7 +138,8 @@ def measure(name: str, command: list[str], trace: Path, *, stop_at: float | None
             seconds = _simulated(line)
             if seconds is not None:
                 rss = round(_status_mb(child.pid, "VmRSS"), 1)
-                sample = Sample(seconds, round(time.monotonic() - start, 1), rss)
+                cpu = round(_cpu_seconds(child.pid), 1)
+                sample = Sample(seconds, round(time.monotonic() - start, 1), rss, cpu)
                 result.samples.append(sample)
                 print(f"{name}: {line.strip()}  rss {sample.rss_mb:.1f} MB  wall {sample.wall:.0f} s",
                       flush=True)
@@ -193,6 +208,7 @@ def report(run: dict[str, Any], how: str) -> list[str]:
     lines += [
         f"- simulated {_when(last.simulated)} in {run['wall'] / 60:.1f} min of wall time; "
         f"exit {run['exit_code']}",
+        *_rates(samples, run.get("length", 0.0)),
         f"- resident memory: {rss[0]:.0f} MB at {_when(samples[0].simulated)}, "
         f"{min(rss):.0f}-{max(rss):.0f} MB "
         f"over the run, {rss[-1]:.0f} MB at the last sample (peak {run['peak_mb']:.0f} MB); from the second "
@@ -208,6 +224,23 @@ def report(run: dict[str, Any], how: str) -> list[str]:
               "|---|" + "---|" * len(shown),
               "| resident MB | " + " | ".join(f"{s.rss_mb:.0f}" for s in shown) + " |"]
     return lines
+
+
+def _rates(samples: list[Sample], length: float) -> list[str]:
+    """Simulated seconds per wall second (and per CPU second, when read), and the wall and CPU time
+    the full `length` would take at those rates, when the run stopped short of it."""
+    last = samples[-1]
+    if last.simulated <= 0 or last.wall <= 0:
+        return []
+    line = f"- rate: {last.simulated / last.wall:.3f} simulated s per wall s"
+    if last.cpu > 0:
+        line += f", {last.simulated / last.cpu:.3f} per CPU s of the run ({last.cpu / 60:.1f} CPU min)"
+    if length > last.simulated:
+        wall = length * last.wall / last.simulated / 3600
+        line += f"; the full {_when(length)} at these rates: {wall:.1f} h of wall time"
+        if last.cpu > 0:
+            line += f", {length * last.cpu / last.simulated / 3600:.1f} h of CPU"
+    return [line]
 
 
 def _when(seconds: float) -> str:
@@ -245,6 +278,7 @@ def main(argv: list[str] | None = None) -> int:
                                            LOOP if args.loop else TARARC))
             trace = Path(command[command.index("--trace") + 1])
             data = asdict(measure(args.run, command, trace, stop_at=args.stop_at, wall_limit=args.wall_limit))
+            data["length"] = ROOM_LENGTH if args.run == "room" else TARARC_LENGTH
         data["how"] = shlex.join(["nice", "-n", "15", ".venv/bin/python", "tools/longrun.py",
                                   *(argv if argv is not None else sys.argv[1:])])
         RESULTS.mkdir(parents=True, exist_ok=True)

@@ -17,6 +17,7 @@ from tools.longrun import (  # noqa: E402
     LOOP,
     Sample,
     _hfsm_run,
+    _rates,
     _simulated,
     check_trace,
     growth,
@@ -68,9 +69,17 @@ def test_a_long_run_stopped_by_a_signal_leaves_a_whole_trace(tmp_path: Path, sig
     assert run.exit_code == code
     assert f"stopped by {signal.Signals(signum).name}" in run.summary
     assert [s.simulated for s in run.samples][:2] == [1.0, 2.0]
-    assert all(s.rss_mb > 0 for s in run.samples)
+    assert all(s.rss_mb > 0 and s.cpu > 0 for s in run.samples)
     assert run.trace_whole and run.trace_problem == ""
     records = [json.loads(line) for line in trace.read_text().splitlines()]
     assert len(records) == run.trace_lines and records[-1]["t"] >= 2.0
     # every state entered was left: the run ended its machines before the trace was closed
     assert sum(r["kind"] == "enter" for r in records) == sum(r["kind"] == "exit" for r in records)
+
+
+def test_the_rates_project_the_full_length() -> None:
+    samples = [Sample(60.0, 600.0, 150.0, 120.0), Sample(120.0, 1200.0, 150.0, 240.0)]
+    (line,) = _rates(samples, 2100.0)
+    assert "0.100 simulated s per wall s, 0.500 per CPU s" in line
+    assert "the full 35 min at these rates: 5.8 h of wall time, 1.2 h of CPU" in line
+    assert _rates(samples, 60.0) == [line.split(";")[0]]  # done: nothing to project
