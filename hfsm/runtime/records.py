@@ -198,6 +198,8 @@ class TextRecords(Records):
         where = ", ".join([json[name] for name in path])
         self.keep(f', "agent": {json[agent.name]}, "path": [{where}], "kind": "receive", "message": '
                   f'{json[message.name]}, "sender": {json[message.sender]}, "data": {text}' + _END)
+        if len(self.kept) >= KEEP_MOST:  # a team's messages: thousands of lines a tick, megabytes
+            self._write_kept()
 
     def put(self, record: dict[str, Any]) -> None:
         if self.kept:
@@ -288,6 +290,7 @@ class TextRecords(Records):
 
 
 _END = "}\n"
+KEEP_MOST = 256  # lines kept before they go to the sink within a tick
 
 
 def _copies(data: Any, other: Any) -> bool:
