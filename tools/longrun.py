@@ -244,7 +244,7 @@ def _rates(samples: list[Sample], length: float) -> list[str]:
 
 
 def _when(seconds: float) -> str:
-    return f"{seconds / 60:.0f} min" if seconds >= 60 else f"{seconds:.0f} s"
+    return f"{seconds / 60:.0f} min" if seconds >= 60 and seconds % 60 == 0 else f"{seconds:.0f} s"
 
 
 def main(argv: list[str] | None = None) -> int:
