@@ -22,6 +22,10 @@ class Mailbox(list[Message]):
         for message in self:
             self._count(message.name, 1)
 
+    def __reduce__(self) -> tuple[type[Mailbox], tuple[list[Message]]]:
+        """Copied and pickled (hfsm-verify's states) as its messages, counted again when rebuilt."""
+        return (Mailbox, (list(self),))
+
     def _count(self, name: str, change: int) -> None:
         left = self.counts.get(name, 0) + change
         if left:

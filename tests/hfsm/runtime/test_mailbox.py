@@ -3,6 +3,9 @@ clear), and takes the message a plain walk of the list takes."""
 
 from __future__ import annotations
 
+import copy
+import pickle
+
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -69,3 +72,10 @@ def test_a_mailbox_made_from_messages_counts_them() -> None:
     box = Mailbox([Message("a", "x", "y", {}, 0), Message("a", "x", "y", {}, 1), Message("b", "x", "y", {}, 1)])
     assert box.counts == {"a": 2, "b": 1}
     assert box.pop().name == "b" and box.counts == {"a": 2}
+
+
+def test_a_mailbox_pickled_or_copied_keeps_its_counts() -> None:
+    box = Mailbox([Message("a", "x", "y", {"n": 1}, 0), Message("b", "x", "y", {}, 1)])
+    for copied in (pickle.loads(pickle.dumps(box, protocol=5)), copy.deepcopy(box), copy.copy(box)):
+        assert isinstance(copied, Mailbox) and list(copied) == list(box) and copied.counts == {"a": 1, "b": 1}
+        assert copied.take(("a",)) == box[0] and copied.counts == {"b": 1} and box.counts == {"a": 1, "b": 1}
