@@ -144,6 +144,8 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
     )
     report.findings(loaded.warnings)
     top = loaded.roots[0]
+    world_inputs = lambda: inputs[_world_name(args, loaded, registry)]  # noqa: E731
+    args.breaks = operating.conditions(args.breaks, loaded, world_inputs)
     args.edited = resume.edited(args.resumed, loaded) if args.resumed else []
     if args.check:
         if args.param or args.history:  # the params given are checked too

@@ -30,7 +30,8 @@ def create_app(
 
     async def meta(request: Request) -> Response:
         shown = "/video" if video is not None and video.is_file() else None
-        controls = control.state() if control is not None else None
+        # the operator's controls only while a live run goes: a replay, or a run over, has none
+        controls = control.state() if control is not None and hub.live and not hub.ended else None
         return JSONResponse(
             {"title": title, "live": hub.live, "machines": dict(svgs), "video": shown, "control": controls}
         )

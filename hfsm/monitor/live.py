@@ -11,12 +11,14 @@ import argparse
 import contextlib
 import sys
 import time
+from collections.abc import Mapping
 from typing import Any
 
 from hfsm.load import Loaded
 from hfsm.monitor.control import Control
 from hfsm.monitor.hub import Hub, MonitorSink
 from hfsm.registry import Registry
+from hfsm.runtime.breaks import condition_names
 from hfsm.trace import TraceSink
 
 
@@ -157,7 +159,9 @@ def sinks(
         extra.append(label_sink())
     monitor = None
     if args.monitor is not None:
-        control = Control(args.agent_names, args.breaks)
+        inputs: Mapping[str, object] = getattr(world, "inputs", dict)()
+        names = condition_names((mf.model for mf in loaded.machines.values()), inputs)
+        control = Control(args.agent_names, args.breaks, names)
         monitor = LiveMonitor(loaded, registry, title, args.monitor, control)
         extra.append(monitor.sink)
     if args.realtime is not None:

@@ -11,6 +11,7 @@ from typing import Any
 from hfsm.autonomy import FULL, Decision
 from hfsm.runtime.agent import Agent, AgentResult, BehaviourStats, Frame
 from hfsm.runtime.breaks import Breakpoint, Breaks
+from hfsm.runtime.condbreaks import check as check_conditions
 from hfsm.runtime.engine import Engine, FatalError
 from hfsm.runtime.failing import Failure, Failures, all_failed
 from hfsm.runtime.holds import hold_text
@@ -81,7 +82,6 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
 def _loop(
     engine: Engine, program: Program, options: RunOptions, world: World
 ) -> tuple[str | None, str, FatalError | None]:
-    agents = engine.agents
     last = span_ticks(options.max_time, program.dt)
     top = program.machines[options.top]
     failures = Failures(engine, options.failures)
@@ -106,15 +106,22 @@ def _loop(
             arrived = world.collect(following)
             if arrived:
                 engine.deliver(arrived)
-            for agent in agents:
-                if agent.result is None:
-                    agent.entries = 0
-                    engine.step(agent.root)  # type: ignore[arg-type]
+            _step_all(engine, following)
             if engine.records is not None:
                 engine.records.flush()
     except FatalError as exc:
         return exc.args[0], exc.traceback, exc
     return None, "", None
+
+
+def _step_all(engine: Engine, tick: int) -> None:
+    """Every running agent's tick; then the conditions of the breakpoints, at its end."""
+    for agent in engine.agents:
+        if agent.result is None:
+            agent.entries = 0
+            engine.step(agent.root)  # type: ignore[arg-type]
+    if engine.breaks is not None:
+        check_conditions(engine.breaks, engine.agents, tick)
 
 
 def _following(engine: Engine, failures: Failures, operator: Operator) -> int | None:
@@ -131,6 +138,8 @@ def _begin(engine: Engine, operator: Operator, failures: Failures, top: RMachine
     if not paused:
         failures.apply(0)
         _start(engine, top, options)
+        if engine.breaks is not None:
+            check_conditions(engine.breaks, engine.agents, 0)
     return paused
 
 

@@ -26,7 +26,10 @@ function follow(from) {
     replay.add(JSON.parse(event.data));
     if ($("follow").checked) seek(replay.end); else render();
   };
-  source.addEventListener("end", () => { page.ended = true; source.close(); status(); render(); });
+  source.addEventListener("end", () => {
+    page.ended = true; source.close(); status(); render();
+    if (window.hfsm.endControls) window.hfsm.endControls();
+  });
 }
 
 function status() {

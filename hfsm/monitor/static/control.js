@@ -36,8 +36,9 @@ function showHeld() {
   $("op-held").textContent = held.map(r => `${r.agent}: ${r.path.slice(1).join("/")} holds '${r.event}' (needs ${r.level})`).join("; ");
 }
 
+// Only on a live run that goes on (the server sends `control` only then) and opened with its token.
 function setUp() {
-  if (!page.control || !operator.token) return;
+  if (!page.live || page.ended || !page.control || !operator.token) return;
   $("operator").hidden = false;
   for (const name of page.control.agents) {
     const option = document.createElement("option");
@@ -60,7 +61,14 @@ function setUp() {
   };
   $("op-add-break").onclick = () => ask({ do: "break", spec: $("op-break").value.trim() });
   $("op-clear-breaks").onclick = () => ask({ do: "break", spec: "clear" });
-  setInterval(showHeld, 250);
+  operator.timer = setInterval(showHeld, 250);
+}
+
+// The run has ended: nothing is left to control.
+function endControls() {
+  $("operator").hidden = true;
+  clearInterval(operator.timer);
+  page.control = null;
 }
 
 // Add the breakpoint, or remove it when set (the server only clears all: the others are set again).
@@ -74,4 +82,5 @@ async function toggleBreak(spec) {
 
 const waitForMeta = setInterval(() => { if (page.control !== undefined) { clearInterval(waitForMeta); setUp(); } }, 50);
 window.hfsm.ask = ask;
+window.hfsm.endControls = endControls;
 window.hfsm.toggleBreak = spec => (operator.token && page.control ? toggleBreak(spec) : Promise.resolve(false));
