@@ -9,7 +9,7 @@ const $ = id => document.getElementById(id);
 async function start() {
   const meta = await (await fetch("/api/meta")).json();
   page.machines = meta.machines; page.live = meta.live;
-  $("title").textContent = `hfsm monitor: ${meta.title}`;
+  $("title").textContent = clip(`hfsm monitor: ${meta.title}`);
   const first = await (await fetch("/api/records?from=0")).json();
   replay.add(first.records);
   page.ended = first.ended;
@@ -22,9 +22,15 @@ async function start() {
 
 function follow(from) {
   const source = new EventSource(`/api/stream?from=${from}`);
+  // Records are taken as they come; the page is drawn at most once a frame, so a fast run makes it
+  // skip frames, never fall behind by a backlog of drawings.
   source.onmessage = event => {
     replay.add(JSON.parse(event.data));
-    if ($("follow").checked) seek(replay.end); else render();
+    if (page.drawing) return;
+    page.drawing = requestAnimationFrame(() => {
+      page.drawing = 0;
+      if ($("follow").checked) seek(replay.end); else render();
+    });
   };
   source.addEventListener("end", () => {
     page.ended = true; source.close(); status(); render();
@@ -79,7 +85,7 @@ function search() {
   box.replaceChildren(hits.length ? `${hits.length} found:` : "no state of that name in the figures shown");
   for (const hit of hits.slice(0, 50)) {
     const link = document.createElement("button");
-    link.type = "button"; link.className = "hit"; link.textContent = `${hit.agent}: ${hit.key}`;
+    link.type = "button"; link.className = "hit"; link.textContent = clip(`${hit.agent}: ${hit.key}`);
     link.onclick = () => { mark(hit.node); hit.node.scrollIntoView({ block: "center" }); };
     box.append(" ", link);
   }
@@ -101,7 +107,7 @@ $("agents").addEventListener("click", event => {
   page.selected = [...block.dataset.key.split("/").slice(1), name].join("/");
   for (const old of document.querySelectorAll("g.node.selected")) old.classList.remove("selected");
   g.classList.add("selected");
-  $("selected").textContent = `selected: ${page.selected}`;
+  $("selected").textContent = clip(`selected: ${page.selected}`);
 });
 
 // Keys: space plays or pauses, arrows step a tick with records, b toggles a breakpoint on the

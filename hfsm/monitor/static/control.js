@@ -12,12 +12,12 @@ async function ask(body) {
     body: JSON.stringify(body),
   });
   const said = await answer.json();
-  $("op-said").textContent = answer.ok ? `sent: ${body.do}` : `refused: ${said.error}`;
+  $("op-said").textContent = clip(answer.ok ? `sent: ${body.do}` : `refused: ${said.error}`);
   if (answer.ok) showBreaks(said.breaks);
   return answer.ok;
 }
 
-function showBreaks(breaks) { operator.breaks = breaks; $("op-breaks").textContent = breaks.length ? `breakpoints: ${breaks.join(", ")}` : ""; }
+function showBreaks(breaks) { operator.breaks = breaks; $("op-breaks").textContent = clip(breaks.length ? `breakpoints: ${breaks.join(", ")}` : ""); }
 
 function heldNow() {
   // the held records whose state has not been left (nor answered) since
@@ -33,7 +33,7 @@ function heldNow() {
 
 function showHeld() {
   const held = heldNow();
-  $("op-held").textContent = held.map(r => `${r.agent}: ${r.path.slice(1).join("/")} holds '${r.event}' (needs ${r.level})`).join("; ");
+  $("op-held").textContent = clip(held.map(r => `${r.agent}: ${r.path.slice(1).join("/")} holds '${r.event}' (needs ${r.level})`).join("; "));
 }
 
 // Only on a live run that goes on (the server sends `control` only then) and opened with its token.
@@ -42,7 +42,8 @@ function setUp() {
   $("operator").hidden = false;
   for (const name of page.control.agents) {
     const option = document.createElement("option");
-    option.textContent = name;
+    option.textContent = clip(name);
+    option.value = name;
     $("op-agent").appendChild(option);
   }
   showBreaks(page.control.breaks);

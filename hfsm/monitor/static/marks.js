@@ -23,14 +23,16 @@ function drawMarks(replay, box) {
     if (found) marks.list.push({ t: r.t, kind: found[0], text: found[1] });
   }
   const end = replay.end || 1;
-  if (box.dataset.count === String(marks.list.length) && box.dataset.end === String(end)) return;
+  const drawnEnd = parseFloat(box.dataset.end || "0");
+  // as a live run grows, the marks move left: redrawn when a mark came or the end grew by 2 %
+  if (box.dataset.count === String(marks.list.length) && end >= drawnEnd && end <= drawnEnd * 1.02) return;
   box.dataset.count = String(marks.list.length); box.dataset.end = String(end);
   box.replaceChildren(...marks.list.map(m => {
     const node = document.createElement("span");
     node.className = `mark ${m.kind}`;
     node.style.left = `${(100 * m.t) / end}%`;
     node.dataset.t = String(m.t);
-    node.title = `${fmt(m.t)} s: ${m.text}`;
+    node.title = clip(`${fmt(m.t)} s: ${m.text}`);
     return node;
   }));
 }

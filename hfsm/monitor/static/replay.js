@@ -3,7 +3,7 @@
 // active states at every depth, timers, attempts, vars and mailbox; the messages; the room's poses.
 
 class Replay {
-  constructor() { this.records = []; this.reset(); }
+  constructor() { this.records = []; this.names = []; this.known = new Set(); this.posed = false; this.reset(); }
 
   reset() {
     this.applied = 0;
@@ -13,7 +13,15 @@ class Replay {
     this.lastKind = null;
   }
 
-  add(records) { for (const r of records) this.records.push(r); }
+  // Records as they come; the agents' names and whether any pose came are kept as they do (a long
+  // live run is never scanned whole again for them).
+  add(records) {
+    for (const r of records) {
+      this.records.push(r);
+      if (r.kind === "pose") this.posed = true;
+      else if (r.agent && !this.known.has(r.agent)) { this.known.add(r.agent); this.names.push(r.agent); }
+    }
+  }
 
   get end() { return this.records.length ? this.records[this.records.length - 1].t : 0; }
 
@@ -108,21 +116,28 @@ class Replay {
 
   // Every message of the whole trace with when each addressee got it (null: never), whatever the
   // time shown: so a message still in flight is told apart from one the radio lost.
+  // Kept up as records come: a receive is matched to the oldest send of that message from that
+  // sender still awaited by that agent.
   fates() {
-    if (this._fates && this._fatesOf === this.records.length) return this._fates;
+    if (!this._fates) { this._fates = []; this._fatesOf = 0; this._awaited = new Map(); }
     const names = this.agentNames();
-    const sends = [];
-    for (const r of this.records) {
+    for (; this._fatesOf < this.records.length; this._fatesOf += 1) {
+      const r = this.records[this._fatesOf];
       if (r.kind === "send") {
         const to = r.to === "others" ? names.filter(n => n !== r.agent) : r.to === "all" ? names : [r.to];
-        sends.push({ t: r.t, from: r.agent, message: r.message, got: Object.fromEntries(to.map(n => [n, null])) });
+        const m = { t: r.t, from: r.agent, message: r.message, got: Object.fromEntries(to.map(n => [n, null])) };
+        this._fates.push(m);
+        for (const n of to) {
+          const key = JSON.stringify([r.agent, r.message, n]);
+          if (!this._awaited.has(key)) this._awaited.set(key, []);
+          this._awaited.get(key).push(m);
+        }
       } else if (r.kind === "receive") {
-        const m = sends.find(s => s.from === r.sender && s.message === r.message && s.got[r.agent] === null);
-        if (m) m.got[r.agent] = r.t;
+        const waiting = this._awaited.get(JSON.stringify([r.sender, r.message, r.agent]));
+        if (waiting && waiting.length) waiting.shift().got[r.agent] = r.t;
       }
     }
-    this._fates = sends; this._fatesOf = this.records.length;
-    return sends;
+    return this._fates;
   }
 
   // The states to draw: the active ones, or once the agent has ended those active at its end.
@@ -131,7 +146,7 @@ class Replay {
     return a.active.size || !a.final ? a.active : a.final;
   }
 
-  hasPoses() { return this.records.some(r => r.kind === "pose"); }
+  hasPoses() { return this.posed; }
 
   // The deepest active path of an agent (the first entered at each depth), for the breadcrumb.
   activePath(agentName) {
@@ -147,11 +162,7 @@ class Replay {
     return [...this.shown(agentName).values()].filter(e => e.path.length === depth + 1 && e.key.startsWith(prefix));
   }
 
-  agentNames() {
-    const names = [];
-    for (const r of this.records) if (r.kind !== "pose" && r.agent && !names.includes(r.agent)) names.push(r.agent);
-    return names;
-  }
+  agentNames() { return this.names; }
 }
 
 if (typeof module !== "undefined") module.exports = { Replay };
