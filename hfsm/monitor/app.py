@@ -11,7 +11,7 @@ from typing import Any
 
 from starlette.applications import Starlette
 from starlette.requests import Request
-from starlette.responses import FileResponse, JSONResponse, Response, StreamingResponse
+from starlette.responses import FileResponse, Response, StreamingResponse
 from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
@@ -32,9 +32,8 @@ def create_app(
         shown = "/video" if video is not None and video.is_file() else None
         # the operator's controls only while a live run goes: a replay, or a run over, has none
         controls = control.state() if control is not None and hub.live and not hub.ended else None
-        return JSONResponse(
-            {"title": title, "live": hub.live, "machines": dict(svgs), "video": shown, "control": controls}
-        )
+        shown_meta = {"title": title, "live": hub.live, "machines": dict(svgs), "video": shown}
+        return _json({**shown_meta, "control": controls})
 
     async def movie(request: Request) -> Response:
         if video is None or not video.is_file():
@@ -44,9 +43,8 @@ def create_app(
     async def records(request: Request) -> Response:
         start = _int(request.query_params.get("from"), 0)
         batch = hub.since(start)
-        return JSONResponse(
-            {"records": batch, "next": start + len(batch), "ended": hub.ended, "dropped": hub.dropped}
-        )
+        ended, dropped = hub.ended, hub.dropped
+        return _json({"records": batch, "next": start + len(batch), "ended": ended, "dropped": dropped})
 
     async def stream(request: Request) -> Response:
         start = _int(request.query_params.get("from"), 0)
@@ -83,6 +81,12 @@ async def _events(hub: Hub, start: int, request: Request) -> AsyncIterator[str]:
             return
         else:
             await asyncio.sleep(POLL)
+
+
+def _json(value: Any) -> Response:
+    """JSON in ASCII: a lone surrogate in a trace's text (valid JSON, not valid UTF-8) goes as its
+    escape, as the stream's events do, instead of failing the response."""
+    return Response(json.dumps(value, default=str), media_type="application/json")
 
 
 def _int(text: Any, default: int) -> int:

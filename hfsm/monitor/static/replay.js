@@ -8,7 +8,7 @@ class Replay {
   reset() {
     this.applied = 0;
     this.agents = new Map();   // name -> {active: Map(key -> entry), mailbox: [], result, failed}
-    this.messages = [];        // {t, from, to, message, receipts: [{agent, t}]}
+    this.sentNames = new Set(); // the names of the messages sent so far
     this.poses = null;         // the latest pose record
     this.lastKind = null;
   }
@@ -83,15 +83,11 @@ class Replay {
         break;
       }
       case "send":
-        this.messages.push({ t: r.t, from: r.agent, to: r.to, message: r.message, data: r.data, receipts: [] });
+        this.sentNames.add(r.message);
         break;
-      case "receive": {
+      case "receive":
         a.mailbox.push({ message: r.message, sender: r.sender, t: r.t, data: r.data });
-        const sent = this.messages.find(m => m.from === r.sender && m.message === r.message &&
-          (m.to === r.agent || m.to === "others" || m.to === "all") && !m.receipts.some(x => x.agent === r.agent));
-        if (sent) sent.receipts.push({ agent: r.agent, t: r.t });
         break;
-      }
       case "failed":
         a.failed = r.reason || "failed";
         if (a.active.size) a.final = a.before || new Map(a.active);
@@ -112,7 +108,7 @@ class Replay {
     if (r.machine_deadline !== undefined) frame.machineDeadline = r.machine_deadline;
   }
 
-  isMessage(name) { return this.messages.some(m => m.message === name); }
+  isMessage(name) { return this.sentNames.has(name); }
 
   // Every message of the whole trace with when each addressee got it (null: never), whatever the
   // time shown: so a message still in flight is told apart from one the radio lost.

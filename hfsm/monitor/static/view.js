@@ -4,6 +4,7 @@
 // room from above, and the messages as a sequence diagram.
 
 const SVGNS = "http://www.w3.org/2000/svg";
+const MAILBOX_SHOWN = 20;           // the newest messages of a mailbox shown
 const folded = new Set();          // keys of blocks the user folded; kept across redraws
 
 function el(tag, attrs = {}, text = "") {
@@ -50,8 +51,9 @@ function drawAgent(replay, machines, name, column) {
   reconcile(tree, roots.map(e => e.key), key => block(replay, machines, name, shown.get(key)),
             (node, key) => updateBlock(replay, machines, name, shown.get(key), node));
   const box = column.querySelector(".mailbox");
-  box.textContent = clip(a.mailbox.length
-    ? "mailbox: " + a.mailbox.map(m => `${m.message} from ${m.sender}`).join(", ") : "mailbox: empty");
+  const waiting = a.mailbox.slice(-MAILBOX_SHOWN).map(m => `${m.message} from ${m.sender}`).join(", ");
+  const more = a.mailbox.length > MAILBOX_SHOWN ? `${a.mailbox.length - MAILBOX_SHOWN} more, then ` : "";
+  box.textContent = clip(a.mailbox.length ? `mailbox: ${more}${waiting}` : "mailbox: empty");
   if (a.lastBarrier) {
     const b = a.lastBarrier;
     box.append(el("div", { class: "barrier-passed" },
