@@ -175,11 +175,13 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         outputs += [("--video", Path(p)) for p in getattr(world, "outputs", ())]
         guard.check_outputs(outputs, _inputs(args, loaded))
         started = True
-        return _run(args, loaded, registry, world, params, agents, trace_path, decisions)
+        code = _run(args, loaded, registry, world, params, agents, trace_path, decisions)
     finally:
         files = guard.close_world(world)
         for path in files if started else ():
             print(f"wrote {path}", file=sys.stderr)
+    live.finish(args)  # after the world wrote its video: the page of a live run shows it
+    return code
 
 
 def _list(args: argparse.Namespace) -> int:
@@ -264,8 +266,7 @@ def _run(
     finally:
         if sink:
             sink.close()
-    if monitor is not None:
-        monitor.finish(args.monitor_hold)
+    args.live_monitor = monitor
     if trace and trace.failed and not result.error:
         result.error = trace.failed
     extra = world.report()

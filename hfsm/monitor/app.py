@@ -23,20 +23,29 @@ POLL = 0.1  # seconds between looks at a live hub
 
 
 def create_app(
-    hub: Hub, svgs: Mapping[str, str], title: str, video: Path | None = None, control: Control | None = None
+    hub: Hub,
+    svgs: Mapping[str, str],
+    title: str,
+    video: Path | None = None,
+    control: Control | None = None,
+    video_rate: float = 5.0,
 ) -> Starlette:
+    def playable() -> bool:
+        return video is not None and hub.video_ready and video.is_file()
+
     async def page(request: Request) -> Response:
         return FileResponse(STATIC / "index.html", headers={"Cache-Control": "no-store"})
 
     async def meta(request: Request) -> Response:
-        shown = "/video" if video is not None and video.is_file() else None
+        shown = {"src": "/video", "rate": video_rate} if playable() else None
         # the operator's controls only while a live run goes: a replay, or a run over, has none
         controls = control.state() if control is not None and hub.live and not hub.ended else None
+        pending = video is not None and not hub.video_ready  # a live run's, written when its world closes
         shown_meta = {"title": title, "live": hub.live, "machines": dict(svgs), "video": shown}
-        return _json({**shown_meta, "control": controls})
+        return _json({**shown_meta, "video_pending": pending, "control": controls})
 
     async def movie(request: Request) -> Response:
-        if video is None or not video.is_file():
+        if video is None or not playable():
             return Response(status_code=404)
         return FileResponse(video)
 

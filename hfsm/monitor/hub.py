@@ -23,6 +23,7 @@ class Hub:
         self.live = live
         self.ended = not live
         self.dropped = 0
+        self.video_ready = True  # whether its video (if any) is written: a live run's, once the world closed
         self._queue: queue.Queue[Record | None] = queue.Queue(size)
 
     def offer(self, record: Record | None) -> None:

@@ -12,6 +12,7 @@ import contextlib
 import sys
 import time
 from collections.abc import Mapping
+from pathlib import Path
 from typing import Any
 
 from hfsm.load import Loaded
@@ -20,6 +21,9 @@ from hfsm.monitor.hub import Hub, MonitorSink
 from hfsm.registry import Registry
 from hfsm.runtime.breaks import condition_names
 from hfsm.trace import TraceSink
+
+Video = tuple[Path, float]
+VIDEO_RATE = 5.0  # simulated seconds in a second of video: hfsm-run's, a frame each 0.5 s at 10 fps
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -114,14 +118,23 @@ class Pacer:
 
 class LiveMonitor:
     def __init__(
-        self, loaded: Loaded, registry: Registry, title: str, port: int, control: Control | None = None
+        self,
+        loaded: Loaded,
+        registry: Registry,
+        title: str,
+        port: int,
+        control: Control | None = None,
+        video: Video | None = None,
     ) -> None:
         from hfsm.monitor.figures import machine_svgs
         from hfsm.monitor.serve import Server
 
         self.hub = Hub(live=True)
+        self.hub.video_ready = False  # a video is playable once the world has closed it
         self.control = control
-        self.server = Server(self.hub, machine_svgs(loaded, registry), title, port, control=control)
+        path, rate = video if video is not None else (None, VIDEO_RATE)
+        svgs = machine_svgs(loaded, registry)
+        self.server = Server(self.hub, svgs, title, port, path, control=control, video_rate=rate)
         self.sink = MonitorSink(self.hub)
 
     def start(self) -> None:
@@ -129,10 +142,12 @@ class LiveMonitor:
         print(f"hfsm-run: monitor at {self.server.url}", file=sys.stderr, flush=True)
 
     def finish(self, hold: float | None) -> None:
-        """Keep the page up after the run as asked, then stop serving."""
+        """Keep the page up after the run as asked (its video shown, if the world wrote one), then
+        stop serving."""
         from hfsm.monitor import serve
 
         self.hub.offer(None)
+        self.hub.video_ready = True
         if hold is None:
             hold = float("inf") if sys.stdin.isatty() else 0.0
         if hold > 0:
@@ -162,7 +177,7 @@ def sinks(
         inputs: Mapping[str, object] = getattr(world, "inputs", dict)()
         names = condition_names((mf.model for mf in loaded.machines.values()), inputs)
         control = Control(args.agent_names, args.breaks, names)
-        monitor = LiveMonitor(loaded, registry, title, args.monitor, control)
+        monitor = LiveMonitor(loaded, registry, title, args.monitor, control, _video(world))
         extra.append(monitor.sink)
     if args.realtime is not None:
         extra.append(Pacer(args.realtime))
@@ -171,3 +186,20 @@ def sinks(
     if monitor is not None:
         monitor.start()
     return Tee(*([trace] if trace is not None else []), *extra), monitor
+
+
+
+def _video(world: object) -> Video | None:
+    """The video the world writes that a browser plays (MP4, WebM), and its rate (the world's
+    `video_rate`, simulated seconds per second of video)."""
+    paths = [Path(p) for p in getattr(world, "outputs", ())]
+    found = next((p for p in paths if p.suffix in (".mp4", ".webm")), None)
+    rate = getattr(world, "video_rate", VIDEO_RATE)
+    return (found, float(rate)) if found is not None else None
+
+
+def finish(args: argparse.Namespace) -> None:
+    """The end of a run with `--monitor`: keep its page up as asked, then stop it."""
+    monitor: LiveMonitor | None = getattr(args, "live_monitor", None)
+    if monitor is not None:
+        monitor.finish(args.monitor_hold)

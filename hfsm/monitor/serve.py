@@ -29,6 +29,7 @@ class Server:
         port: int = 0,
         video: Path | None = None,
         control: Control | None = None,
+        video_rate: float = 5.0,
     ) -> None:
         self._socket = _bind(port)
         self.port = self._socket.getsockname()[1]
@@ -36,7 +37,7 @@ class Server:
         if control is not None:
             control.serve_at(HOST, self.port)
         config = uvicorn.Config(
-            create_app(hub, svgs, title, video, control),
+            create_app(hub, svgs, title, video, control, video_rate),
             log_level="warning",
             lifespan="off",
             timeout_graceful_shutdown=1,

@@ -33,3 +33,31 @@ def test_the_h264_video_of_a_sim_run_plays_in_chromium(page: Any, tmp_path: Path
         assert page.locator(".agent").count() == 2
     finally:
         server.stop()
+
+
+@pytest.mark.slow
+def test_a_live_sim_run_shows_its_video_once_the_world_wrote_it(page: Any, tmp_path: Path) -> None:
+    import subprocess
+    import sys
+
+    process = subprocess.Popen(
+        [sys.executable, "-m", "hfsm.cli.run", str(ROOT / "machines" / "move_furniture.yaml"), "--max-time", "2",
+         "--out", str(tmp_path), "--quiet", "--progress", "0", "--realtime", "2", "--monitor",
+         "--monitor-hold", "30"],
+        stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True)  # fmt: skip
+    try:
+        assert process.stderr is not None
+        line = ""
+        while "monitor at" not in line:
+            line = process.stderr.readline()
+            assert line, "hfsm-run ended without serving the monitor"
+        page.goto(line.split("monitor at ", 1)[1].strip())
+        page.wait_for_function("window.hfsm.replay.records.length > 0", timeout=60000)
+        page.wait_for_selector("#video-box", state="visible", timeout=120000)
+        page.wait_for_function("document.getElementById('video').readyState >= 1", timeout=20000)
+        assert page.evaluate("document.getElementById('video').duration") == pytest.approx(0.5)  # 5 frames
+        page.evaluate("window.hfsm.seek(1.5)")
+        page.wait_for_function("Math.abs(document.getElementById('video').currentTime - 0.3) < 1e-3")
+    finally:
+        process.kill()
+        process.wait()

@@ -14,7 +14,7 @@ async function start() {
   replay.add(first.records);
   page.ended = first.ended;
   page.control = meta.control;
-  if (meta.video) { $("video").src = meta.video; $("video-box").hidden = false; }
+  showVideo(meta.video);
   if (page.live && !page.ended) follow(first.next);
   seek(page.live ? replay.end : 0);  // a live run that waits (for its operator) shows where it stands
   status();
@@ -35,6 +35,7 @@ function follow(from) {
   source.addEventListener("end", () => {
     page.ended = true; source.close(); status(); render();
     if (window.hfsm.endControls) window.hfsm.endControls();
+    awaitVideo();
   });
 }
 
@@ -58,6 +59,7 @@ function render() {
   drawSequence(replay, $("sequence"), page.ended);
   drawMarks(replay, $("marks"));
   refreshFigure();
+  videoFollows(page.time);
   status();
 }
 
@@ -129,5 +131,6 @@ document.addEventListener("keydown", event => {
 document.addEventListener("keyup", event => { if (event.key === " " && event.target.closest("button")) event.preventDefault(); });
 
 setUpZoom();
+setUpVideo();
 window.hfsm = { replay, seek, page };
 start();
