@@ -258,6 +258,7 @@ def _run(
     sink, monitor = live.sinks(args, checked, loaded, registry, loaded.roots[0].name, world)
     if monitor is not None and monitor.control is not None:
         options.live = monitor.control.queue
+        options.every_tick = args.realtime is not None  # paced: a person acts, in the very next tick
     stop = guard.StopFlag()
     try:
         with guard.signals_flag(stop):

@@ -16,6 +16,7 @@ from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
 from hfsm.monitor.control import Control, control_route
+from hfsm.monitor.figures import Figures
 from hfsm.monitor.hub import Hub
 
 STATIC = Path(__file__).parent / "static"
@@ -24,12 +25,14 @@ POLL = 0.1  # seconds between looks at a live hub
 
 def create_app(
     hub: Hub,
-    svgs: Mapping[str, str],
+    svgs: Mapping[str, str] | Figures,
     title: str,
     video: Path | None = None,
     control: Control | None = None,
     video_rate: float = 5.0,
 ) -> Starlette:
+    figures = svgs if isinstance(svgs, Figures) else Figures(svgs)
+
     def playable() -> bool:
         return video is not None and hub.video_ready and video.is_file()
 
@@ -37,11 +40,13 @@ def create_app(
         return FileResponse(STATIC / "index.html", headers={"Cache-Control": "no-store"})
 
     async def meta(request: Request) -> Response:
+        while not figures.ready():  # a live run's drawings are being made
+            await asyncio.sleep(0.05)
         shown = {"src": "/video", "rate": video_rate} if playable() else None
         # the operator's controls only while a live run goes: a replay, or a run over, has none
         controls = control.state() if control is not None and hub.live and not hub.ended else None
         pending = video is not None and not hub.video_ready  # a live run's, written when its world closes
-        shown_meta = {"title": title, "live": hub.live, "machines": dict(svgs), "video": shown}
+        shown_meta = {"title": title, "live": hub.live, "machines": figures.svgs, "video": shown}
         return _json({**shown_meta, "video_pending": pending, "control": controls})
 
     async def movie(request: Request) -> Response:

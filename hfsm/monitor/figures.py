@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+import threading
+from collections.abc import Callable, Iterable, Mapping
 
 from hfsm.diagram.dot import to_dot
 from hfsm.diagram.extract import Sources, machine_figure
@@ -24,3 +25,27 @@ def machine_svgs(loaded: Loaded, registry: Registry, names: Iterable[str] | None
         except RenderError:
             continue
     return svgs
+
+
+class Figures:
+    """The drawings a page shows: given, or made in a thread beside the run (Graphviz takes a while
+    for many machines, and a live run should not wait for it)."""
+
+    def __init__(
+        self, svgs: Mapping[str, str] | None = None, make: Callable[[], dict[str, str]] | None = None
+    ) -> None:
+        self.svgs: dict[str, str] = dict(svgs or {})
+        self._done = threading.Event()
+        if make is None:
+            self._done.set()
+        else:
+            threading.Thread(target=self._make, args=(make,), name="hfsm-figures", daemon=True).start()
+
+    def _make(self, make: Callable[[], dict[str, str]]) -> None:
+        try:
+            self.svgs = make()
+        finally:
+            self._done.set()
+
+    def ready(self) -> bool:
+        return self._done.is_set()

@@ -126,14 +126,14 @@ class LiveMonitor:
         control: Control | None = None,
         video: Video | None = None,
     ) -> None:
-        from hfsm.monitor.figures import machine_svgs
+        from hfsm.monitor.figures import Figures, machine_svgs
         from hfsm.monitor.serve import Server
 
         self.hub = Hub(live=True)
         self.hub.video_ready = False  # a video is playable once the world has closed it
         self.control = control
         path, rate = video if video is not None else (None, VIDEO_RATE)
-        svgs = machine_svgs(loaded, registry)
+        svgs = Figures(make=lambda: machine_svgs(loaded, registry))
         self.server = Server(self.hub, svgs, title, port, path, control=control, video_rate=rate)
         self.sink = MonitorSink(self.hub)
 

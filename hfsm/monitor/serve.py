@@ -13,6 +13,7 @@ import uvicorn
 from hfsm.errors import UsageError
 from hfsm.monitor.app import create_app
 from hfsm.monitor.control import Control
+from hfsm.monitor.figures import Figures
 from hfsm.monitor.hub import Hub
 
 HOST = "127.0.0.1"
@@ -24,7 +25,7 @@ class Server:
     def __init__(
         self,
         hub: Hub,
-        svgs: Mapping[str, str],
+        svgs: Mapping[str, str] | Figures,
         title: str,
         port: int = 0,
         video: Path | None = None,

@@ -51,6 +51,7 @@ class RunOptions:
     live: queue.Queue[Decision] | None = None  # the operator's, as a live page sends them
     breaks: list[Breakpoint] = field(default_factory=list)  # records that pause the run (shared: a page adds)
     scopes: Mapping[str, tuple[str, tuple[str, ...]]] = field(default_factory=dict)  # agent -> scope
+    every_tick: bool = False  # a static world runs every tick too (paced, live: an action acts in the next)
 
 
 def run(program: Program, world: World, options: RunOptions, trace: TraceSink | None = None) -> RunResult:
@@ -92,7 +93,7 @@ def _loop(
         if paused:
             return "blocked forever: " + paused, "", None
         while engine.running:
-            following = _following(engine, failures, operator)
+            following = engine.tick + 1 if options.every_tick else _following(engine, failures, operator)
             if following is None or following > last:
                 return _stopped(engine, following, last, options.max_time), "", None
             if not world.static:
