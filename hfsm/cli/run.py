@@ -256,6 +256,7 @@ def _run(
     trace = TraceFile(trace_path) if trace_path else None
     checked = resume.begin(trace, args, loaded, program.dt)
     sink, monitor = live.sinks(args, checked, loaded, registry, loaded.roots[0].name, world)
+    options.pace = live.pacer(args)
     if monitor is not None and monitor.control is not None:
         options.live = monitor.control.queue
         options.every_tick = args.realtime is not None  # paced: a person acts, in the very next tick

@@ -2,7 +2,7 @@
 
 The run writes each record to its trace file and to the hub's bounded queue (`Tee`); the same seed
 writes the same trace with or without the monitor. `--realtime K` paces a run to K times real time
-(a `Pacer` sink), so that a fast run can be watched; it changes wall time, never a record.
+(a `Pacer`, before each tick), so that a fast run can be watched; it changes wall time, never a record.
 """
 
 from __future__ import annotations
@@ -23,6 +23,7 @@ from hfsm.runtime.breaks import condition_names
 from hfsm.trace import TraceSink
 
 Video = tuple[Path, float]
+LATE = 0.5  # seconds a paced run may fall behind (a slow tick) and catch up on
 VIDEO_RATE = 5.0  # simulated seconds in a second of video: hfsm-run's, a frame each 0.5 s at 10 fps
 
 
@@ -92,28 +93,22 @@ class Tee:
 
 
 class Pacer:
-    """Holds each tick back until `speed` times the wall time since the first has passed."""
+    """Holds each tick back until `speed` times the wall time since the first has passed (the run
+    calls `wait` with a tick's time before running it)."""
 
     def __init__(self, speed: float) -> None:
         if not 0 < speed < float("inf"):
             raise ValueError(f"--realtime takes a positive number, not {speed}")
         self.speed = speed
         self._start: float | None = None
-        self._t = 0.0
 
-    def write(self, record: dict[str, Any]) -> None:
-        self._t = float(record.get("t", self._t))
-
-    def flush(self) -> None:
+    def wait(self, t: float) -> None:
         now = time.monotonic()
-        if self._start is None:
-            self._start = now - self._t / self.speed
-        ahead = self._start + self._t / self.speed - now
+        if self._start is None or self._start + t / self.speed < now - LATE:
+            self._start = now - t / self.speed  # at first, and after a pause: no rush to catch up
+        ahead = self._start + t / self.speed - now
         if ahead > 0:
             time.sleep(ahead)
-
-    def close(self) -> None:
-        pass
 
 
 class LiveMonitor:
@@ -179,8 +174,6 @@ def sinks(
         control = Control(args.agent_names, args.breaks, names)
         monitor = LiveMonitor(loaded, registry, title, args.monitor, control, _video(world))
         extra.append(monitor.sink)
-    if args.realtime is not None:
-        extra.append(Pacer(args.realtime))
     if not extra:
         return trace, None
     if monitor is not None:
@@ -203,3 +196,7 @@ def finish(args: argparse.Namespace) -> None:
     monitor: LiveMonitor | None = getattr(args, "live_monitor", None)
     if monitor is not None:
         monitor.finish(args.monitor_hold)
+
+
+def pacer(args: argparse.Namespace) -> Pacer | None:
+    return Pacer(args.realtime) if args.realtime is not None else None

@@ -52,6 +52,7 @@ class RunOptions:
     breaks: list[Breakpoint] = field(default_factory=list)  # records that pause the run (shared: a page adds)
     scopes: Mapping[str, tuple[str, tuple[str, ...]]] = field(default_factory=dict)  # agent -> scope
     every_tick: bool = False  # a static world runs every tick too (paced, live: an action acts in the next)
+    pace: Any = None  # Pacer-like: `wait(t)` before each tick of time t (hfsm-run --realtime)
 
 
 def run(program: Program, world: World, options: RunOptions, trace: TraceSink | None = None) -> RunResult:
@@ -100,6 +101,8 @@ def _loop(
                 world.advance(engine.tick)
                 _world_records(engine, world_records, following)
             engine.tick = following
+            if options.pace is not None:
+                options.pace.wait(round(following * program.dt, 9))
             if operator.busy and (paused := _operator_first(operator, following)):
                 return "blocked forever: " + paused + "; " + _where(engine.agents), "", None
             if failures.due or not world.static:
