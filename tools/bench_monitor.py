@@ -15,6 +15,8 @@
 from __future__ import annotations
 
 import argparse
+import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -61,13 +63,17 @@ states:
 """
 
 
-def wall(command: list[str]) -> float:
-    """Seconds a run takes (exit 0, or 1 when stopped by --max-time with its trace written)."""
+def wall(command: list[str]) -> tuple[float, float]:
+    """Wall and CPU seconds (user + system) a run takes (exit 0, or 1 when stopped by --max-time with
+    its trace written). CPU time is what a loaded machine cannot blur."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     begin = time.perf_counter()
     done = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     if done.returncode not in (0, 1):
         raise SystemExit(f"{' '.join(command)}: exit {done.returncode}")
-    return time.perf_counter() - begin
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
+    return time.perf_counter() - begin, cpu
 
 
 def monitor_cost(runs: int, out: Path) -> list[str]:
@@ -81,10 +87,11 @@ def monitor_cost(runs: int, out: Path) -> list[str]:
             HFSM_RUN, str(ROOT / "machines" / "move_furniture.yaml"), "--seed", "3", "--max-time", "60",
             "--out", str(out), "--no-video", "--quiet", "--progress", "0"],
     }  # fmt: skip
-    lines = ["| run | without `--monitor` | with `--monitor` | ratio (median of pairs) | same trace |",
-             "|---|---|---|---|---|"]  # fmt: skip
+    lines = [f"Load average at the start: {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores.", "",
+             "| run | without `--monitor`: wall, CPU | with: wall, CPU | ratio with/without (median of "
+             "pairs): wall, **CPU** | same trace |", "|---|---|---|---|---|"]  # fmt: skip
     for name, command in cases.items():
-        walls: dict[bool, list[float]] = {False: [], True: []}
+        walls: dict[bool, list[tuple[float, float]]] = {False: [], True: []}
         traces: dict[bool, bytes] = {}
         for _ in range(runs):
             for monitor in (False, True):
@@ -92,10 +99,12 @@ def monitor_cost(runs: int, out: Path) -> list[str]:
                 extra = ["--trace", str(trace)] + (["--monitor", "--monitor-hold", "0"] if monitor else [])
                 walls[monitor].append(wall([*command, *extra]))
                 traces[monitor] = trace.read_bytes()
-        ratios = [w / o for w, o in zip(walls[True], walls[False], strict=True)]
-        without, with_ = statistics.median(walls[False]), statistics.median(walls[True])
-        lines.append(f"| {name} | {without:.2f} s | {with_:.2f} s | **{statistics.median(ratios):.3f}** "
-                     f"| {traces[True] == traces[False]} |")
+        off, on = ([statistics.median(w[i] for w in walls[m]) for i in (0, 1)] for m in (False, True))
+        ratio = [statistics.median(w[i] / o[i] for w, o in zip(walls[True], walls[False], strict=True))
+                 for i in (0, 1)]
+        same = traces[True] == traces[False]
+        lines.append(f"| {name} | {off[0]:.2f} s, {off[1]:.2f} s | {on[0]:.2f} s, {on[1]:.2f} s "
+                     f"| {ratio[0]:.3f}, **{ratio[1]:.3f}** | {same} |")
     return lines
 
 
@@ -220,6 +229,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--hours", type=float, default=1.0, help="of a 16-robot run, for the heap")
     p.add_argument("--heap-rate", type=int, default=20000, help="records a second of the heap's feed")
     p.add_argument("--skip-runs", action="store_true", help="the page only")
+    p.add_argument("--runs-only", action="store_true", help="--monitor's cost only")
     p.add_argument("--report", type=Path)
     args = p.parse_args(argv)
     command = " ".join(["`.venv/bin/python tools/bench_monitor.py", *(argv or sys.argv[1:])]) + "`"
@@ -228,6 +238,9 @@ def main(argv: list[str] | None = None) -> int:
         if not args.skip_runs:
             lines += ["`--monitor` on a run's wall time (page served, no browser attached):", "",
                       *monitor_cost(args.runs, Path(folder)), ""]
+    if args.runs_only:
+        print("\n".join(lines))
+        return 0
     lines += ["The page fed live (headless Chromium, the feed and the server in one process):", "",
               *page_rates([int(r) for r in args.rates.split(",")], args.seconds), "",
               *page_heap(args.hours, args.heap_rate)]

@@ -28,24 +28,29 @@ def machine_svgs(loaded: Loaded, registry: Registry, names: Iterable[str] | None
 
 
 class Figures:
-    """The drawings a page shows: given, or made in a thread beside the run (Graphviz takes a while
-    for many machines, and a live run should not wait for it)."""
+    """The drawings a page shows: given, or made in a thread when a page first asks for them (Graphviz
+    takes a while for many machines: a live run neither waits for it nor pays for it unwatched)."""
 
     def __init__(
         self, svgs: Mapping[str, str] | None = None, make: Callable[[], dict[str, str]] | None = None
     ) -> None:
         self.svgs: dict[str, str] = dict(svgs or {})
+        self._make = make
         self._done = threading.Event()
+        self._lock = threading.Lock()
         if make is None:
             self._done.set()
-        else:
-            threading.Thread(target=self._make, args=(make,), name="hfsm-figures", daemon=True).start()
 
-    def _make(self, make: Callable[[], dict[str, str]]) -> None:
+    def ready(self) -> bool:
+        """Whether the drawings are made; the first call starts making them."""
+        with self._lock:
+            make, self._make = self._make, None
+        if make is not None:
+            threading.Thread(target=self._run, args=(make,), name="hfsm-figures", daemon=True).start()
+        return self._done.is_set()
+
+    def _run(self, make: Callable[[], dict[str, str]]) -> None:
         try:
             self.svgs = make()
         finally:
             self._done.set()
-
-    def ready(self) -> bool:
-        return self._done.is_set()
