@@ -30,8 +30,9 @@ function cleanSvg(node) {
   const out = document.createElementNS(SVGNS, node.localName);
   for (const attr of node.attributes) {
     if (!SAFE_ATTRS.has(attr.name) || /url\s*\(|javascript:/i.test(attr.value)) continue;
-    if (attr.namespaceURI) out.setAttributeNS(attr.namespaceURI, attr.name, clip(attr.value));
-    else out.setAttribute(attr.name, clip(attr.value));
+    const value = attr.name === "xlink:title" ? clip(attr.value) : attr.value;  // geometry is never cut
+    if (attr.namespaceURI) out.setAttributeNS(attr.namespaceURI, attr.name, value);
+    else out.setAttribute(attr.name, value);
   }
   for (const child of node.childNodes) {
     if (child.nodeType === Node.TEXT_NODE) out.append(document.createTextNode(clip(child.data)));
