@@ -181,7 +181,6 @@ def sinks(
     return Tee(*([trace] if trace is not None else []), *extra), monitor
 
 
-
 def _video(world: object) -> Video | None:
     """The video the world writes that a browser plays (MP4, WebM), and its rate (the world's
     `video_rate`, simulated seconds per second of video)."""
@@ -199,4 +198,5 @@ def finish(args: argparse.Namespace) -> None:
 
 
 def pacer(args: argparse.Namespace) -> Pacer | None:
+    """The run's pace (`--realtime K`), if asked."""
     return Pacer(args.realtime) if args.realtime is not None else None
