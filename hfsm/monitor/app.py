@@ -56,9 +56,9 @@ def create_app(
 
     async def records(request: Request) -> Response:
         start = _int(request.query_params.get("from"), 0)
-        batch = hub.since(start)
-        ended, dropped = hub.ended, hub.dropped
-        return _json({"records": batch, "next": start + len(batch), "ended": ended, "dropped": dropped})
+        batch, count = hub.since_json(start)
+        tail = json.dumps({"next": start + count, "ended": hub.ended, "dropped": hub.dropped})[1:]
+        return Response(b'{"records": ' + batch + b", " + tail.encode(), media_type="application/json")
 
     async def stream(request: Request) -> Response:
         start = _int(request.query_params.get("from"), 0)
@@ -80,16 +80,16 @@ def create_app(
     return Starlette(routes=routes)
 
 
-async def _events(hub: Hub, start: int, request: Request) -> AsyncIterator[str]:
+async def _events(hub: Hub, start: int, request: Request) -> AsyncIterator[bytes]:
     """Batches of new records as `data:` events, then one `end` event when the run is over."""
     sent = start
     while True:
-        batch = hub.since(sent)
-        if batch:
-            sent += len(batch)
-            yield f"data: {json.dumps(batch, default=str)}\n\n"
+        batch, count = hub.since_json(sent)
+        if count:
+            sent += count
+            yield b"data: " + batch + b"\n\n"
         elif hub.ended:
-            yield "event: end\ndata: {}\n\n"
+            yield b"event: end\ndata: {}\n\n"
             return
         elif await request.is_disconnected():
             return

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import json
 import sys
 import time
 from collections.abc import Mapping
@@ -20,7 +21,7 @@ from hfsm.monitor.control import Control
 from hfsm.monitor.hub import Hub, MonitorSink
 from hfsm.registry import Registry
 from hfsm.runtime.breaks import condition_names
-from hfsm.trace import TraceSink
+from hfsm.trace import Lines, TraceSink
 
 Video = tuple[Path, float]
 LATE = 0.5  # seconds a paced run may fall behind (a slow tick) and catch up on
@@ -90,6 +91,26 @@ class Tee:
     def close(self) -> None:
         for sink in self.sinks:
             sink.close()
+
+
+class LineTee(Tee):
+    """A Tee in front of a trace file: the engine's lines go as they are to the sinks that take
+    lines (the file, the monitor), read once as records for the others (a video's labels)."""
+
+    def __init__(self, *sinks: TraceSink) -> None:
+        super().__init__(*sinks)
+        self._lines = Lines()
+        self._takers = [s.write_line for s in sinks if hasattr(s, "write_line")]
+        self._readers = [s for s in sinks if not hasattr(s, "write_line")]
+
+    def write_line(self, text: str) -> None:
+        for take in self._takers:
+            take(text)
+        if self._readers:
+            for line in self._lines.feed(text):
+                record = json.loads(line)
+                for sink in self._readers:
+                    sink.write(record)
 
 
 class Pacer:
@@ -178,7 +199,8 @@ def sinks(
         return trace, None
     if monitor is not None:
         monitor.start()
-    return Tee(*([trace] if trace is not None else []), *extra), monitor
+    kind = LineTee if hasattr(trace, "write_line") else Tee
+    return kind(*([trace] if trace is not None else []), *extra), monitor
 
 
 def _video(world: object) -> Video | None:

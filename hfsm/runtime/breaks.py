@@ -12,6 +12,7 @@ end of every tick for each agent, it pauses the run when it turns true.
 
 from __future__ import annotations
 
+import json
 from collections.abc import Collection, Iterable
 from dataclasses import dataclass, field
 from fnmatch import fnmatchcase
@@ -20,7 +21,7 @@ from typing import Any
 from hfsm.expr import ExprSyntaxError, Fn, Names, compile_expr
 from hfsm.model import Machine
 from hfsm.names import is_name
-from hfsm.trace import TraceSink
+from hfsm.trace import Lines, TraceSink
 
 KINDS = ("enter", "exit", "event", "send", "receive", "held", "error", "timeout", "failed", "cond")
 COND = "cond:"
@@ -143,3 +144,27 @@ class Breaks:
     def close(self) -> None:
         if self.sink is not None:
             self.sink.close()
+
+
+class LineBreaks(Breaks):
+    """Breaks in front of a sink that takes lines (a trace file): the engine's lines go on as they
+    are; they are read as records only while a breakpoint on records is set."""
+
+    def __init__(self, points: list[Breakpoint], sink: Any) -> None:
+        super().__init__(points, sink)
+        self._lines = Lines()
+        self._pass = sink.write_line
+
+    def write_line(self, text: str) -> None:
+        if any(p.kind != "cond" for p in self.points):
+            for line in self._lines.feed(text):
+                try:
+                    self._match(json.loads(line))
+                except ValueError:  # the end of a line begun before the breakpoint was set
+                    continue
+        self._pass(text)
+
+    def _match(self, record: dict[str, Any]) -> None:
+        for point in self.points:
+            if self.hit is None and point.matches(record):
+                self.hit = point.text

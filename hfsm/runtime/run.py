@@ -10,7 +10,7 @@ from typing import Any
 
 from hfsm.autonomy import FULL, Decision
 from hfsm.runtime.agent import Agent, AgentResult, BehaviourStats, Frame
-from hfsm.runtime.breaks import Breakpoint, Breaks
+from hfsm.runtime.breaks import Breakpoint, Breaks, LineBreaks
 from hfsm.runtime.condbreaks import check as check_conditions
 from hfsm.runtime.engine import Engine, FatalError
 from hfsm.runtime.failing import Failure, Failures, all_failed
@@ -60,7 +60,10 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
     world.start([a.name for a in agents], program.dt)
     for agent in agents:
         agent.robot = world.handle(agent.name)
-    breaks = Breaks(options.breaks, trace) if options.breaks or options.live is not None else None
+    breaks = None
+    if options.breaks or options.live is not None:
+        kind = LineBreaks if hasattr(trace, "write_line") else Breaks
+        breaks = kind(options.breaks, trace)
     engine = Engine(agents, world, program.dt, breaks or trace)
     engine.level = options.autonomy
     engine.breaks = breaks

@@ -132,7 +132,7 @@ function block(replay, machines, agentName, entry) {
     const id = agentName + ":" + entry.key;
     if (node.open) folded.delete(id); else folded.add(id);
   });
-  const svg = machines[entry.do] ? safeSvg(machines[entry.do]) : null;
+  const svg = figureOf(machines, entry.do);
   node.append(el("summary"), el("div", { class: "facts" }));
   if (svg) {
     const drawing = el("div", { class: "drawing", "data-machine": entry.do });
@@ -142,6 +142,15 @@ function block(replay, machines, agentName, entry) {
   }
   node.append(el("table", { class: "vars" }), el("div", { class: "children" }));
   return node;
+}
+
+// A machine's figure, made safe once (safesvg.js) and copied for each block that shows it.
+const figures = new Map();
+function figureOf(machines, name) {
+  if (!machines[name]) return null;
+  if (!figures.has(name)) figures.set(name, safeSvg(machines[name]));
+  const svg = figures.get(name);
+  return svg ? svg.cloneNode(true) : null;
 }
 
 function updateBlock(replay, machines, agentName, entry, node) {
