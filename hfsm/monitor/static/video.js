@@ -37,6 +37,7 @@ function setUpVideo() {
     timelineFollows();  // the person moved the video
   });
   v.addEventListener("timeupdate", () => { if (!v.paused) timelineFollows(); });
+  v.addEventListener("pause", timelineFollows);  // stopped, or at its end: the last frame's time
   v.addEventListener("play", () => { if (page.playing) $("play").click(); });
   v.addEventListener("loadedmetadata", () => videoFollows(page.time));
 }
