@@ -103,6 +103,12 @@ class SimWorld:
         """The files the world writes when it closes (video, final picture)."""
         return list(self._outputs)
 
+    @property
+    def video_rate(self) -> float:
+        """Simulated seconds a second of its video shows (a frame every `every` s at `fps`)."""
+        recorder = self._recorder
+        return recorder.every * recorder.fps if recorder is not None else 5.0
+
     def agent_names(self) -> list[str]:
         return list(self.world.robots)
 
