@@ -30,6 +30,20 @@ class TraceSink(Protocol):
     def close(self) -> None: ...
 
 
+class Lines:
+    """Whole lines out of text given in pieces (`write_line` may be given a record's start alone)."""
+
+    def __init__(self) -> None:
+        self._part = ""
+
+    def feed(self, text: str) -> list[str]:
+        if "\n" not in text:
+            self._part += text
+            return []
+        *lines, self._part = (self._part + text).split("\n")
+        return lines
+
+
 class ListTrace:
     """Keeps the records in memory: for tests and tools."""
 

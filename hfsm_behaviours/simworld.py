@@ -103,6 +103,12 @@ class SimWorld:
         """The files the world writes when it closes (video, final picture)."""
         return list(self._outputs)
 
+    @property
+    def video_rate(self) -> float:
+        """Simulated seconds a second of its video shows (a frame every `every` s at `fps`)."""
+        recorder = self._recorder
+        return recorder.every * recorder.fps if recorder is not None else 5.0
+
     def agent_names(self) -> list[str]:
         return list(self.world.robots)
 
@@ -160,9 +166,11 @@ class SimWorld:
         return [{"t": round(tick * self.dt, 9), "agent": "world", "path": [], "kind": "pose",
                  **self.world.poses()}]
 
-    def label_sink(self) -> Labels:
-        """A trace sink that labels each robot in the video with its role and current behaviour."""
-        return Labels(self.world.labels)
+    def label_sink(self) -> Labels | None:
+        """A trace sink that labels each robot in the video with its role and current behaviour; None
+        without a video (`--no-video`): then the trace file is the run's only sink, and the engine
+        writes it as text (hfsm.runtime.records.TextRecords, the same bytes for less work)."""
+        return None if self._recorder is None else Labels(self.world.labels)
 
     def failures(self, tick: int) -> Sequence[tuple[str, str]]:
         """The scenario's failures due now (`at:` times and the seeded `rate:` ones), and robots

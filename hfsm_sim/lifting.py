@@ -70,8 +70,12 @@ class _Hands:
 
 class Lifting:
     def __init__(self, cid: int, table: TableBody, bodies: dict[str, RobotBody],
-                 slip_deg: float = SLIP_DEG, dt: float = 1.0 / 120) -> None:
+                 slip_deg: float = SLIP_DEG, dt: float = 1.0 / 120,
+                 hand_points: dict[int, list[Vec]] | None = None) -> None:
+        """`hand_points`: a cache of the hands' points by robot body, shared by the liftings of
+        one world, which empties it after every physics step; None: none."""
         self._cid = cid
+        self._points = hand_points
         self._smoothing = min(1.0, dt / LOAD_TAU)
         self._table = table
         self._hands = {name: _Hands(body) for name, body in bodies.items()}
@@ -148,6 +152,15 @@ class Lifting:
         return pos, p.getMatrixFromQuaternion(orn)
 
     def _hand_points(self, body: RobotBody) -> list[Vec]:
+        cache = self._points
+        if cache is None:
+            return self._hands_now(body)
+        points = cache.get(body.body)
+        if points is None:
+            points = cache[body.body] = self._hands_now(body)
+        return points
+
+    def _hands_now(self, body: RobotBody) -> list[Vec]:
         g = body.geometry
         state = p.getLinkState(body.body, ARMS, physicsClientId=self._cid)
         rot, origin = p.getMatrixFromQuaternion(state[5]), state[4]

@@ -24,42 +24,40 @@ class Scorer:
         self._names = list(truth.robot_ids)
         self._tables = {t.body for t in truth.tables}
         self._ids = {truth.robot_id(n): n for n in self._names}
+        self._kinds: dict[int, str] = dict.fromkeys(truth.room_bodies.walls, "wall")
+        self._kinds.update(dict.fromkeys(self._tables, "table"))
+        self._kinds.update(dict.fromkeys(self._ids, "robot"))
         self._touching: set[tuple[str, str, str]] = set()
         self.episodes: dict[str, int] = {"robot": 0, "table": 0, "wall": 0}
         self.bumps: dict[str, bool] = dict.fromkeys(self._names, False)
         self.dropped = False
         self.fallen: set[str] = set()
 
-    def _kind(self, other: int) -> str | None:
-        if other in self._ids:
-            return "robot"
-        if other in self._tables:
-            return "table"
-        if other in self._truth.room_bodies.walls:
-            return "wall"
-        return None
-
     def observe(self) -> None:
         """Call after every physics step: one query of all the world's contacts (each pair once)."""
         now: set[tuple[str, str, str]] = set()
-        ids = self._ids
+        ids, kinds, bumps = self._ids, self._kinds, self.bumps
         for contact in p.getContactPoints(physicsClientId=self._cid):
             if contact[8] > TOUCH:
                 continue
             a, b = contact[1], contact[2]
+            if a not in ids and b not in ids:
+                continue  # a table on the floor: most contacts, and none a robot's
             for me, other in ((a, b), (b, a)):
                 name = ids.get(me)
                 if name is None:
                     continue
-                kind = self._kind(other)
+                kind = kinds.get(other)
                 if kind is not None:
-                    self.bumps[name] = True
+                    bumps[name] = True
                     partner = ids.get(other, "")
                     now.add((kind, min(name, partner), max(name, partner)) if partner
                             else (kind, name, ""))
-        for key in now - self._touching:
-            self.episodes[key[0]] += 1
-        self._touching = now
+        touching = self._touching
+        if now != touching:
+            for key in now - touching:
+                self.episodes[key[0]] += 1
+            self._touching = now
 
     def take_bumps(self) -> dict[str, bool]:
         bumps, self.bumps = self.bumps, dict.fromkeys(self._names, False)

@@ -45,7 +45,9 @@ class World:
             room = build_room(cid, scenario.room)
             tables = [build_table(cid, spec) for spec in scenario.all_tables]
             bodies = Bodies(cid, scenario, seed, body, motion)
-            self._liftings = [Lifting(cid, table, bodies.full, dt=1.0 / physics_hz) for table in tables]
+            self._hand_points: dict[int, list[tuple[float, float, float]]] = {}  # this step's
+            self._liftings = [Lifting(cid, table, bodies.full, dt=1.0 / physics_hz,
+                                      hand_points=self._hand_points) for table in tables]
             # one renderer for every robot's cameras; "tiny" (pybullet's) only to compare with
             cameras = TinyRenderer(cid) if renderer == "tiny" else Rasteriser(cid)
             self.robots: dict[str, AnyRobot] = make_robots(cid, scenario, seed, bodies, self._liftings,
@@ -96,6 +98,7 @@ class World:
                 robot._pre_step(dt)
             p.stepSimulation(physicsClientId=cid)
             self._steps += 1
+            self._hand_points.clear()
             for lifting in self._liftings:
                 lifting.update(raised)
             self._scorer.observe()

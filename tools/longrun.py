@@ -16,10 +16,13 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import shlex
+import signal
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
@@ -30,10 +33,14 @@ import yaml
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
+from hfsm_sim.scenario import load_scenario  # noqa: E402
 from tools.docsection import write_section  # noqa: E402
 from tools.room.scenes import room  # noqa: E402
 
 DOC = ROOT / "docs" / "ROBUSTNESS.md"
+ROOM_LENGTH, TARARC_LENGTH = 35 * 60.0, 3600.0  # what the issue asks for
+TARARC = "machines/tararc.yaml"
+LOOP = "tools/tararc/tararc_loop.yaml"  # TARARC round after round, for a run as long as the timer
 RESULTS = ROOT / "docs" / "results"
 
 
@@ -42,6 +49,8 @@ class Sample:
     simulated: float  # seconds
     wall: float  # seconds since the child started
     rss_mb: float
+    cpu: float = 0.0  # the child's CPU seconds (user + system) by then; 0: not read
+
 
 
 @dataclass
@@ -57,6 +66,7 @@ class LongRun:
     trace_whole: bool = False
     trace_problem: str = ""
     summary: str = ""
+    length: float = 0.0  # simulated seconds the run was to last
 
 
 def _status_mb(pid: int, key: str) -> float:
@@ -68,6 +78,15 @@ def _status_mb(pid: int, key: str) -> float:
         if line.startswith(key + ":"):
             return int(line.split()[1]) / 1024
     return 0.0
+
+
+def _cpu_seconds(pid: int) -> float:
+    """User and system CPU seconds of a running process (/proc/PID/stat), 0 if it cannot be read."""
+    try:
+        fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    except (OSError, IndexError):
+        return 0.0
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
 def _simulated(line: str) -> float | None:
@@ -100,30 +119,50 @@ def check_trace(path: Path) -> tuple[int, bool, str]:
     return len(lines), True, ""
 
 
-def measure(name: str, command: list[str], trace: Path) -> LongRun:
-    """Run `command` (an hfsm-run writing `trace`), sampling its memory at every progress line."""
+def measure(name: str, command: list[str], trace: Path, *, stop_at: float | None = None,
+            wall_limit: float | None = None, stop_signal: int = signal.SIGTERM) -> LongRun:
+    """Run `command` (an hfsm-run writing `trace`), sampling its memory at every progress line.
+    `stop_signal` is sent to it at the first progress line at `stop_at` simulated seconds or later,
+    or after `wall_limit` seconds of wall time: a run stopped from outside, as a user stops one."""
     result = LongRun(name, command)
     start = time.monotonic()
     child = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=ROOT)
     assert child.stdout is not None
+    timer = None
+    if wall_limit is not None:
+        timer = threading.Timer(wall_limit, _stop, (child, stop_signal))
+        timer.start()
     tail: list[str] = []
-    for line in child.stdout:
-        seconds = _simulated(line)
-        if seconds is not None:
-            rss = round(_status_mb(child.pid, "VmRSS"), 1)
-            sample = Sample(seconds, round(time.monotonic() - start, 1), rss)
-            result.samples.append(sample)
-            print(f"{name}: {line.strip()}  rss {sample.rss_mb:.1f} MB  wall {sample.wall:.0f} s", flush=True)
-        else:
-            tail = [*tail, line.rstrip()][-40:]
-        result.peak_mb = max(result.peak_mb, _status_mb(child.pid, "VmHWM"))
-    result.exit_code = child.wait()
+    try:
+        for line in child.stdout:
+            seconds = _simulated(line)
+            if seconds is not None:
+                rss = round(_status_mb(child.pid, "VmRSS"), 1)
+                cpu = round(_cpu_seconds(child.pid), 1)
+                sample = Sample(seconds, round(time.monotonic() - start, 1), rss, cpu)
+                result.samples.append(sample)
+                print(f"{name}: {line.strip()}  rss {sample.rss_mb:.1f} MB  wall {sample.wall:.0f} s",
+                      flush=True)
+                if stop_at is not None and seconds >= stop_at:
+                    _stop(child, stop_signal)
+            else:
+                tail = [*tail, line.rstrip()][-40:]
+            result.peak_mb = max(result.peak_mb, _status_mb(child.pid, "VmHWM"))
+        result.exit_code = child.wait()
+    finally:
+        if timer is not None:
+            timer.cancel()
     result.wall = round(time.monotonic() - start, 1)
     result.peak_mb = round(result.peak_mb, 1)
     result.summary = "\n".join(t for t in tail if t.startswith(("score", "task", "error", "hfsm-run")))
     result.trace_lines, result.trace_whole, result.trace_problem = check_trace(trace)
     result.trace_bytes = trace.stat().st_size if trace.exists() else 0
     return result
+
+
+def _stop(child: subprocess.Popen[str], signum: int) -> None:
+    if child.poll() is None:
+        child.send_signal(signum)
 
 
 def _hfsm_run() -> str:
@@ -140,10 +179,17 @@ def room_command(out: Path, seed: int, tables: int, robots: int, extra: list[str
             "--trace", str(out / "longrun_room.jsonl"), *extra]
 
 
-def tararc_command(out: Path, seed: int, extra: list[str], every: float) -> list[str]:
-    return [_hfsm_run(), "machines/tararc.yaml", "--scenario", "alloc_50", "--seed", str(seed),
+def tararc_command(out: Path, seed: int, extra: list[str], every: float, machine: str = TARARC) -> list[str]:
+    """alloc_50; with the loop machine, every other round to its targets mirrored across the room."""
+    loop = ["--param", f"south={json.dumps(mirrored('alloc_50'))}"] if machine == LOOP else []
+    return [_hfsm_run(), machine, "--scenario", "alloc_50", "--seed", str(seed),
             "--no-video", "--quiet", "--progress", str(every), "--max-time", "3660",
-            "--trace", str(out / "longrun_tararc.jsonl"), *extra]
+            "--trace", str(out / "longrun_tararc.jsonl"), *loop, *extra]
+
+
+def mirrored(scenario: str) -> list[dict[str, Any]]:
+    """The scenario's targets as tasks, mirrored across the room's width (y to -y)."""
+    return [{**task, "y": -task["y"]} for task in load_scenario(scenario).tasks() if task["kind"] == "target"]
 
 
 def growth(samples: list[Sample]) -> float:
@@ -162,6 +208,7 @@ def report(run: dict[str, Any], how: str) -> list[str]:
     lines += [
         f"- simulated {_when(last.simulated)} in {run['wall'] / 60:.1f} min of wall time; "
         f"exit {run['exit_code']}",
+        *_rates(samples, run.get("length", 0.0)),
         f"- resident memory: {rss[0]:.0f} MB at {_when(samples[0].simulated)}, "
         f"{min(rss):.0f}-{max(rss):.0f} MB "
         f"over the run, {rss[-1]:.0f} MB at the last sample (peak {run['peak_mb']:.0f} MB); from the second "
@@ -179,8 +226,25 @@ def report(run: dict[str, Any], how: str) -> list[str]:
     return lines
 
 
+def _rates(samples: list[Sample], length: float) -> list[str]:
+    """Simulated seconds per wall second (and per CPU second, when read), and the wall and CPU time
+    the full `length` would take at those rates, when the run stopped short of it."""
+    last = samples[-1]
+    if last.simulated <= 0 or last.wall <= 0:
+        return []
+    line = f"- rate: {last.simulated / last.wall:.3f} simulated s per wall s"
+    if last.cpu > 0:
+        line += f", {last.simulated / last.cpu:.3f} per CPU s of the run ({last.cpu / 60:.1f} CPU min)"
+    if length > last.simulated:
+        wall = length * last.wall / last.simulated / 3600
+        line += f"; the full {_when(length)} at these rates: {wall:.1f} h of wall time"
+        if last.cpu > 0:
+            line += f", {length * last.cpu / last.simulated / 3600:.1f} h of CPU"
+    return [line]
+
+
 def _when(seconds: float) -> str:
-    return f"{seconds / 60:.0f} min" if seconds >= 60 else f"{seconds:.0f} s"
+    return f"{seconds / 60:.0f} min" if seconds >= 60 and seconds % 60 == 0 else f"{seconds:.0f} s"
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -194,6 +258,10 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--from", dest="source", type=Path, help="rewrite the docs from this results file")
     parser.add_argument("--no-doc", action="store_true")
     parser.add_argument("--section", help="the docs section and results file's name (default: longrun_RUN)")
+    parser.add_argument("--loop", action="store_true",
+                        help=f"tararc: run {LOOP} (the allocation again and again) instead of {TARARC}")
+    parser.add_argument("--stop-at", type=float, help="SIGTERM the run at this many simulated seconds")
+    parser.add_argument("--wall-limit", type=float, help="SIGTERM the run after this many wall seconds")
     parser.add_argument("--args", dest="extra", type=shlex.split, default=[],
                         help="more hfsm-run arguments, as one string ('--fail r5@10 --radio-loss 0.3')")
     args = parser.parse_args(argv)
@@ -205,9 +273,12 @@ def main(argv: list[str] | None = None) -> int:
         with tempfile.TemporaryDirectory() as tmp:
             out = Path(tmp)
             command = (room_command(out, args.seed, args.tables, args.robots, args.extra, args.every)
-                       if args.run == "room" else tararc_command(out, args.seed, args.extra, args.every))
+                       if args.run == "room"
+                       else tararc_command(out, args.seed, args.extra, args.every,
+                                           LOOP if args.loop else TARARC))
             trace = Path(command[command.index("--trace") + 1])
-            data = asdict(measure(args.run, command, trace))
+            data = asdict(measure(args.run, command, trace, stop_at=args.stop_at, wall_limit=args.wall_limit))
+            data["length"] = ROOM_LENGTH if args.run == "room" else TARARC_LENGTH
         data["how"] = shlex.join(["nice", "-n", "15", ".venv/bin/python", "tools/longrun.py",
                                   *(argv if argv is not None else sys.argv[1:])])
         RESULTS.mkdir(parents=True, exist_ok=True)

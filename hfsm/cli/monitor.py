@@ -38,6 +38,14 @@ def build_parser() -> argparse.ArgumentParser:
     )
     p.add_argument("--machine", type=Path, metavar="FILE", help="the run's top machine file")
     p.add_argument(
+        "--video-rate",
+        type=float,
+        default=5.0,
+        metavar="K",
+        help="simulated seconds one second of the video shows (default 5: hfsm-run's video, a frame "
+        "every 0.5 s at 10 frames a second)",
+    )
+    p.add_argument(
         "--for",
         dest="seconds",
         type=float,
@@ -59,7 +67,9 @@ def main(argv: Sequence[str] | None = None) -> int:
             (v for v in (args.trace.with_suffix(".mp4"), args.trace.with_suffix(".webm")) if v.is_file()),
             None,
         )
-        server = Server(Hub(records), svgs, args.trace.name, args.port, video)
+        if not 0 < args.video_rate < float("inf"):
+            raise UsageError(f"--video-rate takes a positive number, not {args.video_rate}")
+        server = Server(Hub(records), svgs, args.trace.name, args.port, video, video_rate=args.video_rate)
     except UserError as err:
         for finding in err.findings:
             print(finding.format(), file=sys.stderr)

@@ -4,9 +4,13 @@ decisions, breakpoints, and resuming a recorded run."""
 from __future__ import annotations
 
 import argparse
+from collections.abc import Callable, Collection
 from pathlib import Path
 
 from hfsm.autonomy import LEVELS
+from hfsm.errors import Finding, UserError
+from hfsm.load import Loaded
+from hfsm.runtime.breaks import Breakpoint, compiled, condition_names
 
 
 def _break(text: str) -> object:
@@ -40,7 +44,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         type=_break,
         default=[],
         metavar="KIND:PATTERN[@AGENT]",
-        help="pause the run after a record that matches (enter:grasp/*, event:failed, send:lift@r1, …)",
+        help="pause the run after a record that matches (enter:grasp/*, event:failed, send:lift@r1, …), "
+        "or when a condition over vars and in turns true (cond:'vars.n > 3'@r1)",
     )
     group.add_argument(
         "--resume",
@@ -48,3 +53,17 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         help="run again what TRACE recorded up to T seconds (its flags, its operator records; checked "
         "byte for byte), then go on with the machine files as they are now",
     )
+
+
+def conditions(
+    breaks: list[Breakpoint], loaded: Loaded, inputs: Callable[[], Collection[str]]
+) -> list[Breakpoint]:
+    """The breakpoints with their conditions compiled against the run's vars and its world's inputs;
+    every bad one at once, at its column in the flag's text (exit 2)."""
+    if not any(b.kind == "cond" for b in breaks):
+        return breaks
+    names = condition_names((mf.model for mf in loaded.machines.values()), inputs())
+    done, problems = compiled(breaks, names)
+    if problems:
+        raise UserError(Finding("--break", 1, p.col, p.code, str(p), end=(1, p.end)) for p in problems)
+    return done

@@ -144,6 +144,8 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
     )
     report.findings(loaded.warnings)
     top = loaded.roots[0]
+    world_inputs = lambda: inputs[_world_name(args, loaded, registry)]  # noqa: E731
+    args.breaks = operating.conditions(args.breaks, loaded, world_inputs)
     args.edited = resume.edited(args.resumed, loaded) if args.resumed else []
     if args.check:
         if args.param or args.history:  # the params given are checked too
@@ -173,11 +175,13 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         outputs += [("--video", Path(p)) for p in getattr(world, "outputs", ())]
         guard.check_outputs(outputs, _inputs(args, loaded))
         started = True
-        return _run(args, loaded, registry, world, params, agents, trace_path, decisions)
+        code = _run(args, loaded, registry, world, params, agents, trace_path, decisions)
     finally:
         files = guard.close_world(world)
         for path in files if started else ():
             print(f"wrote {path}", file=sys.stderr)
+    live.finish(args)  # after the world wrote its video: the page of a live run shows it
+    return code
 
 
 def _list(args: argparse.Namespace) -> int:
@@ -252,8 +256,10 @@ def _run(
     trace = TraceFile(trace_path) if trace_path else None
     checked = resume.begin(trace, args, loaded, program.dt)
     sink, monitor = live.sinks(args, checked, loaded, registry, loaded.roots[0].name, world)
+    options.pace = live.pacer(args)
     if monitor is not None and monitor.control is not None:
         options.live = monitor.control.queue
+        options.every_tick = args.realtime is not None  # paced: a person acts, in the very next tick
     stop = guard.StopFlag()
     try:
         with guard.signals_flag(stop):
@@ -262,8 +268,7 @@ def _run(
     finally:
         if sink:
             sink.close()
-    if monitor is not None:
-        monitor.finish(args.monitor_hold)
+    args.live_monitor = monitor
     if trace and trace.failed and not result.error:
         result.error = trace.failed
     extra = world.report()

@@ -19,14 +19,16 @@ from starlette.responses import JSONResponse, Response
 from starlette.routing import Route
 
 from hfsm.autonomy import Decision, decision_of, decision_problems
-from hfsm.runtime.breaks import Breakpoint, parse
+from hfsm.expr import Names
+from hfsm.runtime.breaks import COND, BreakError, Breakpoint, parse
 
 KEYS = ("do", "agent", "event", "level", "message", "data")
 
 
 class Control:
-    def __init__(self, agents: Sequence[str], breaks: list[Breakpoint]) -> None:
+    def __init__(self, agents: Sequence[str], breaks: list[Breakpoint], names: Names | None = None) -> None:
         self.agents = list(agents)
+        self.names = names  # what a condition may read (None: conditions are refused)
         self.token = secrets.token_urlsafe(18)
         self.queue: queue.Queue[Decision] = queue.Queue()
         self.breaks = breaks  # the run's own list: a breakpoint added here acts from the next record
@@ -58,10 +60,15 @@ class Control:
         if spec == "clear":
             self.breaks.clear()
             return []
+        text = str(spec)
+        if text.startswith(COND) and self.names is None:
+            return ["this run takes no breakpoint on a condition"]
         try:
-            self.breaks.append(parse(str(spec)))
-        except ValueError as exc:
-            return [str(exc)]
+            point = parse(text, self.names)
+        except BreakError as exc:
+            at = f" (column {exc.col} of {text!r})" if text.startswith(COND) else ""
+            return [f"{exc}{at}"]
+        self.breaks.append(point)
         return []
 
     def state(self) -> dict[str, Any]:

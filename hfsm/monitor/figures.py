@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+import threading
+from collections.abc import Callable, Iterable, Mapping
 
 from hfsm.diagram.dot import to_dot
 from hfsm.diagram.extract import Sources, machine_figure
@@ -24,3 +25,32 @@ def machine_svgs(loaded: Loaded, registry: Registry, names: Iterable[str] | None
         except RenderError:
             continue
     return svgs
+
+
+class Figures:
+    """The drawings a page shows: given, or made in a thread when a page first asks for them (Graphviz
+    takes a while for many machines: a live run neither waits for it nor pays for it unwatched)."""
+
+    def __init__(
+        self, svgs: Mapping[str, str] | None = None, make: Callable[[], dict[str, str]] | None = None
+    ) -> None:
+        self.svgs: dict[str, str] = dict(svgs or {})
+        self._make = make
+        self._done = threading.Event()
+        self._lock = threading.Lock()
+        if make is None:
+            self._done.set()
+
+    def ready(self) -> bool:
+        """Whether the drawings are made; the first call starts making them."""
+        with self._lock:
+            make, self._make = self._make, None
+        if make is not None:
+            threading.Thread(target=self._run, args=(make,), name="hfsm-figures", daemon=True).start()
+        return self._done.is_set()
+
+    def _run(self, make: Callable[[], dict[str, str]]) -> None:
+        try:
+            self.svgs = make()
+        finally:
+            self._done.set()

@@ -13,6 +13,7 @@ import uvicorn
 from hfsm.errors import UsageError
 from hfsm.monitor.app import create_app
 from hfsm.monitor.control import Control
+from hfsm.monitor.figures import Figures
 from hfsm.monitor.hub import Hub
 
 HOST = "127.0.0.1"
@@ -24,11 +25,12 @@ class Server:
     def __init__(
         self,
         hub: Hub,
-        svgs: Mapping[str, str],
+        svgs: Mapping[str, str] | Figures,
         title: str,
         port: int = 0,
         video: Path | None = None,
         control: Control | None = None,
+        video_rate: float = 5.0,
     ) -> None:
         self._socket = _bind(port)
         self.port = self._socket.getsockname()[1]
@@ -36,7 +38,7 @@ class Server:
         if control is not None:
             control.serve_at(HOST, self.port)
         config = uvicorn.Config(
-            create_app(hub, svgs, title, video, control),
+            create_app(hub, svgs, title, video, control, video_rate),
             log_level="warning",
             lifespan="off",
             timeout_graceful_shutdown=1,

@@ -16,6 +16,7 @@ from typing import Any, Protocol
 from hfsm.expr import Scope
 from hfsm.primitive import Message
 from hfsm.runtime.live import Clock, FrameLive, Inputs
+from hfsm.runtime.mailbox import Mailbox
 from hfsm.runtime.scopes import Radio
 from hfsm.runtime.states import RMachine, RRegion, RState
 from hfsm.world import World
@@ -187,7 +188,7 @@ class Agent:
         self.inputs = Inputs(world, name)
         self.clock: Clock = _NO_CLOCK  # the engine's, once it runs
         self.root: Frame | None = None
-        self.mailbox: list[Message] = []
+        self.mailbox = Mailbox()
         self.radio = Radio("", (), top=True)  # outside every scope: set with the run's agents
         self.stats: dict[str, BehaviourStats] = {}
         self.entries = 0
@@ -204,17 +205,7 @@ class Agent:
     def take_message(self, names: Any, prefix: str = "") -> Message | None:
         """Remove and return the earliest message whose name is in `names`, sent under the scope
         whose names begin with `prefix`: `scope/name`, or a bare name outside every scope."""
-        if not prefix:
-            for i, message in enumerate(self.mailbox):
-                if message.name in names:
-                    return self.mailbox.pop(i)
-            return None
-        n = len(prefix)
-        for i, message in enumerate(self.mailbox):
-            name = message.name
-            if name.startswith(prefix) and name[n:] in names:
-                return self.mailbox.pop(i)
-        return None
+        return self.mailbox.take(names, prefix)
 
     def new_stats(self, behaviour: str) -> BehaviourStats:
         stats = self.stats[behaviour] = BehaviourStats()

@@ -3,7 +3,7 @@
 The clock (clock.py) and the ledger of records and statistics (ledger.py) are read by all; the
 tick loop (loop.py) steps each agent; arcs.py takes events and enters states; calls.py starts
 behaviours, machines and retries; parallel.py runs regions; timers.py makes spans ticks and fires
-timers; mailbox.py is the radio; cancel.py cancels what runs below a state; holds.py keeps arcs
+timers; messaging.py is the radio; cancel.py cancels what runs below a state; holds.py keeps arcs
 for the operator. The engine's state is plain attributes of these parts: it pickles (hfsm-verify).
 """
 
@@ -21,7 +21,7 @@ from hfsm.runtime.core import FatalError
 from hfsm.runtime.holds import Holds
 from hfsm.runtime.ledger import Ledger
 from hfsm.runtime.loop import Loop
-from hfsm.runtime.mailbox import Mailbox
+from hfsm.runtime.messaging import Messaging
 from hfsm.runtime.parallel import Regions
 from hfsm.runtime.program import RMachine
 from hfsm.runtime.records import records_for
@@ -55,7 +55,7 @@ class Engine:
         holds = self.holds = Holds(agents, ledger, cancelling)
         regions = Regions(clock, ledger, calls, cancelling)
         arcs = Arcs(clock, ledger, calls, timers, self.team.order)
-        mailbox = self.mailbox = Mailbox(agents, world, self.team, clock, ledger, cancelling)
+        mailbox = self.mailbox = Messaging(agents, world, self.team, clock, ledger, cancelling)
         loop = self.loop = Loop(clock, ledger, calls, arcs, regions, timers, mailbox, cancelling, len(agents))
         # The calls between parts go both ways: each is given those built after it.
         timers.arcs, timers.calls, timers.holds = arcs, calls, holds

@@ -18,7 +18,7 @@ from hfsm.runtime.cancel import Cancelling
 from hfsm.runtime.clock import RunClock
 from hfsm.runtime.core import FatalError
 from hfsm.runtime.ledger import Ledger
-from hfsm.runtime.mailbox import Mailbox
+from hfsm.runtime.messaging import Messaging
 from hfsm.runtime.parallel import Regions
 from hfsm.runtime.program import RMachine
 from hfsm.runtime.timers import Timers
@@ -33,7 +33,7 @@ class Loop:
         arcs: Arcs,
         regions: Regions,
         timers: Timers,
-        mailbox: Mailbox,
+        mailbox: Messaging,
         cancelling: Cancelling,
         running: int,
     ) -> None:

@@ -1,98 +1,77 @@
-"""The radio (docs/REFERENCE.md#messages-between-agents): messages sent under a scope's name,
-delivered into mailboxes or to the team's barriers, and a state's mapped message taking its arc."""
+"""An agent's mailbox: its messages in arrival order, and how many of each name it holds.
+
+Messages nobody takes stay for the rest of the run (docs/REFERENCE.md#messages-between-agents), so a
+long run of a large team holds thousands. Most looks into a mailbox find nothing: the counts answer
+those at once, and only a look that will find a message walks the list.
+"""
 
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Collection, Iterable
+from typing import SupportsIndex
 
 from hfsm.primitive import Message
-from hfsm.runtime.agent import Agent, Event, Frame, Region, leaves
-from hfsm.runtime.cancel import Cancelling
-from hfsm.runtime.clock import RunClock
-from hfsm.runtime.ledger import Ledger
-from hfsm.runtime.parts import ArcsPart, HoldsPart
-from hfsm.runtime.scopes import radio_at
-from hfsm.runtime.scopes import targets as scoped_targets
-from hfsm.runtime.states import RState
-from hfsm.runtime.team import Team
-from hfsm.world import NOTICE, World
 
 
-class Mailbox:
-    arcs: ArcsPart
-    holds: HoldsPart
+class Mailbox(list[Message]):
+    """A list of messages (the engine appends, takes, holds and puts back) that keeps `counts`."""
 
-    def __init__(
-        self,
-        agents: list[Agent],
-        world: World,
-        team: Team,
-        clock: RunClock,
-        ledger: Ledger,
-        cancelling: Cancelling,
-    ) -> None:
-        self.agents = agents
-        self.by_name = {a.name: a for a in agents}
-        self.world = world
-        self.team = team
-        self.clock = clock
-        self.ledger = ledger
-        self.cancelling = cancelling
+    def __init__(self, messages: Iterable[Message] = ()) -> None:
+        super().__init__(messages)
+        self.counts: dict[str, int] = {}
+        for message in self:
+            self._count(message.name, 1)
 
-    def send(self, agent: Agent, where: Frame | Region, name: str, to: str, data: dict[str, Any]) -> str:
-        """Post a message, its name qualified by the scope it is sent under; a problem as text, or ''."""
-        radio = radio_at(where)
-        if not radio.top:
-            chosen = scoped_targets(radio, agent.name, to)
-            if isinstance(chosen, str):
-                return chosen
-            targets = chosen
-            name = radio.prefix + name
-        elif to == "others":
-            targets = [a.name for a in self.agents if a is not agent]
-        elif to == "all":
-            targets = [a.name for a in self.agents]
-        elif to in self.by_name:
-            targets = [to]
+    def __reduce__(self) -> tuple[type[Mailbox], tuple[list[Message]]]:
+        """Copied and pickled (hfsm-verify's states) as its messages, counted again when rebuilt."""
+        return (Mailbox, (list(self),))
+
+    def _count(self, name: str, change: int) -> None:
+        left = self.counts.get(name, 0) + change
+        if left:
+            self.counts[name] = left
         else:
-            return f"send: no agent named '{to}' (agents: {', '.join(self.by_name)})"
-        if self.ledger.records is not None:
-            self.ledger.emit(agent, where.path(), "send", message=name, to=to, data=data)
-        for target in targets:
-            self.world.post(Message(name, agent.name, target, dict(data), self.clock.tick))
-        return ""
+            del self.counts[name]
 
-    def deliver(self, messages: list[Message]) -> None:
-        for message in messages:
-            agent = self.by_name.get(message.to)
-            if agent is None or agent.failed is not None:
-                continue  # lost: nobody hears it
-            if message.name == NOTICE:
-                self.team.receive(message)
-                continue
-            agent.mailbox.append(message)
-            if self.ledger.records is not None:
-                path = _first_leaf(agent)
-                self.ledger.emit(
-                    agent, path, "receive", message=message.name, sender=message.sender, data=message.data
-                )
+    def append(self, message: Message) -> None:
+        super().append(message)
+        self._count(message.name, 1)
 
-    def message_arc(self, frame: Frame, state: RState) -> bool:
-        """The earliest message the state maps takes its arc (or is held): whether one did. A state
-        that holds an arc looks at no message."""
-        if frame.held is not None:
-            return False
-        if state.autonomy and self.holds.message_held(frame, state):
-            return True
-        message = frame.agent.take_message(state.msg_arcs, frame.radio.prefix)
-        if message is None:
-            return False
-        event = Event(message.name, message=message)
-        self.arcs.settle(frame, self.cancelling.cancelled(frame, message.name, event))
-        return True
+    def insert(self, index: SupportsIndex, message: Message) -> None:
+        super().insert(index, message)
+        self._count(message.name, 1)
 
+    def pop(self, index: SupportsIndex = -1) -> Message:
+        message = super().pop(index)
+        self._count(message.name, -1)
+        return message
 
-def _first_leaf(agent: Agent) -> list[str]:
-    if agent.root is None:
-        return [agent.top]
-    return next(leaves(agent.root)).path()
+    def __delitem__(self, index: SupportsIndex | slice) -> None:
+        if isinstance(index, slice):
+            raise TypeError("a mailbox deletes one message at a time")
+        self._count(self[index].name, -1)
+        super().__delitem__(index)
+
+    def clear(self) -> None:
+        super().clear()
+        self.counts.clear()
+
+    def take(self, names: Collection[str], prefix: str = "") -> Message | None:
+        """Remove and return the earliest message whose name is in `names`, sent under the scope
+        whose names begin with `prefix`: `scope/name`, or a bare name outside every scope."""
+        counts = self.counts
+        if not prefix:
+            if not any(name in counts for name in names):
+                return None
+            for i, message in enumerate(self):
+                if message.name in names:
+                    return self.pop(i)
+            return None
+        if not any(prefix + name in counts for name in names):
+            return None
+        n = len(prefix)
+        for i, message in enumerate(self):
+            name = message.name
+            if name.startswith(prefix) and name[n:] in names:
+                return self.pop(i)
+        return None

@@ -15,6 +15,7 @@ from __future__ import annotations
 from json.encoder import encode_basestring
 from typing import Any, Protocol
 
+from hfsm.primitive import Message
 from hfsm.runtime.agent import Agent, Event, Frame
 from hfsm.runtime.states import RRegion, RState
 from hfsm.runtime.ticktime import TickTimes, seconds_text
@@ -42,6 +43,10 @@ class Records:
 
     def write(self, agent: Agent, path: list[str], kind: str, **extra: Any) -> None:
         self.sink.write({"t": self.clock.time, "agent": agent.name, "path": path, "kind": kind, **extra})
+
+    def receive(self, agent: Agent, path: list[str], message: Message) -> None:
+        """A message entered `agent`'s mailbox (`path`: where the agent runs)."""
+        self.write(agent, path, "receive", message=message.name, sender=message.sender, data=message.data)
 
     def put(self, record: dict[str, Any]) -> None:
         """A record made elsewhere (a world's), written as it is."""
@@ -154,6 +159,7 @@ class TextRecords(Records):
         self.shown_text = _END
         self.state_deadline: int | None = None  # the same, for a quick look
         self.deadline: int | None = None
+        self.last_data: tuple[Any, str] | None = None  # a message's data, and as JSON
 
     def _head(self, tick: int) -> str:
         """`{"t": …` of `tick`, with those of the next ticks: twice as many as last time when the
@@ -177,12 +183,33 @@ class TextRecords(Records):
             self._write_kept()
         super().write(agent, path, kind, **extra)
 
+    def receive(self, agent: Agent, path: list[str], message: Message) -> None:
+        """Kept as a line. A message said to many arrives as copies of one dict (the engine's `send`):
+        its data is encoded once for all the copies that arrive in a row within a tick."""
+        data, last = message.data, self.last_data
+        if last is not None and _copies(data, last[0]):
+            text = last[1]
+        else:
+            try:
+                text = encode(data)
+            except ValueError:  # NaN or an infinity: the sink's own way
+                super().receive(agent, path, message)
+                return
+            self.last_data = (data, text)
+        json = self.json
+        where = ", ".join([json[name] for name in path])
+        self.keep(f', "agent": {json[agent.name]}, "path": [{where}], "kind": "receive", "message": '
+                  f'{json[message.name]}, "sender": {json[message.sender]}, "data": {text}' + _END)
+        if len(self.kept) >= KEEP_MOST:  # a team's messages: thousands of lines a tick, megabytes
+            self._write_kept()
+
     def put(self, record: dict[str, Any]) -> None:
         if self.kept:
             self._write_kept()
         self.sink.write(record)
 
     def flush(self) -> None:
+        self.last_data = None  # the data's values may change from one tick to the next
         kept = self.kept
         if kept:  # _write_kept, without its call
             tick = self.clock.tick
@@ -265,6 +292,17 @@ class TextRecords(Records):
 
 
 _END = "}\n"
+KEEP_MOST = 256  # lines kept before they go to the sink within a tick
+
+
+def _copies(data: Any, other: Any) -> bool:
+    """Whether two messages' data are shallow copies of one dict: the same keys in the same order,
+    each holding the same object (so the same JSON)."""
+    if data is other:
+        return True
+    if data.__class__ is not dict or other.__class__ is not dict or len(data) != len(other):
+        return False
+    return all(a is b and v is other[b] for (a, v), b in zip(data.items(), other, strict=True))
 _NONE: dict[str, tuple[Any, tuple[str, str]]] = {}
 
 

@@ -10,7 +10,8 @@ from typing import Any
 
 from hfsm.autonomy import FULL, Decision
 from hfsm.runtime.agent import Agent, AgentResult, BehaviourStats, Frame
-from hfsm.runtime.breaks import Breakpoint, Breaks
+from hfsm.runtime.breaks import Breakpoint, Breaks, LineBreaks
+from hfsm.runtime.condbreaks import check as check_conditions
 from hfsm.runtime.engine import Engine, FatalError
 from hfsm.runtime.failing import Failure, Failures, all_failed
 from hfsm.runtime.holds import hold_text
@@ -51,6 +52,8 @@ class RunOptions:
     live: queue.Queue[Decision] | None = None  # the operator's, as a live page sends them
     breaks: list[Breakpoint] = field(default_factory=list)  # records that pause the run (shared: a page adds)
     scopes: Mapping[str, tuple[str, tuple[str, ...]]] = field(default_factory=dict)  # agent -> scope
+    every_tick: bool = False  # a static world runs every tick too (paced, live: an action acts in the next)
+    pace: Any = None  # Pacer-like: `wait(t)` before each tick of time t (hfsm-run --realtime)
 
 
 def run(program: Program, world: World, options: RunOptions, trace: TraceSink | None = None) -> RunResult:
@@ -58,7 +61,10 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
     world.start([a.name for a in agents], program.dt)
     for agent in agents:
         agent.robot = world.handle(agent.name)
-    breaks = Breaks(options.breaks, trace) if options.breaks or options.live is not None else None
+    breaks = None
+    if options.breaks or options.live is not None:
+        kind = LineBreaks if hasattr(trace, "write_line") else Breaks
+        breaks = kind(options.breaks, trace)
     engine = Engine(agents, world, program.dt, breaks or trace)
     engine.level = options.autonomy
     engine.breaks = breaks
@@ -82,25 +88,26 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
 def _loop(
     engine: Engine, program: Program, options: RunOptions, world: World
 ) -> tuple[str | None, str, FatalError | None]:
-    agents = engine.agents
     last = span_ticks(options.max_time, program.dt)
     top = program.machines[options.top]
     failures = Failures(engine, options.failures)
     operator = Operator(engine, options.decisions, options.live)
     world_records = getattr(world, "trace_records", None)  # a world may add records (robots' poses)
-    clock, loop = engine.clock, engine.loop
+    clock = engine.clock
     try:
         paused = _begin(engine, operator, failures, top, options)
         if paused:
             return "blocked forever: " + paused, "", None
-        while loop.running:
-            following = _following(engine, failures, operator)
+        while engine.loop.running:
+            following = clock.tick + 1 if options.every_tick else _following(engine, failures, operator)
             if following is None or following > last:
                 return _stopped(engine, following, last, options.max_time), "", None
             if not world.static:
                 world.advance(clock.tick)
                 _world_records(engine, world_records, following)
             clock.tick = following
+            if options.pace is not None:
+                options.pace.wait(round(following * program.dt, 9))
             if operator.busy and (paused := _operator_first(operator, following)):
                 return "blocked forever: " + paused + "; " + _where(engine.agents), "", None
             if failures.due or not world.static:
@@ -108,15 +115,23 @@ def _loop(
             arrived = world.collect(following)
             if arrived:
                 engine.deliver(arrived)
-            for agent in agents:
-                if agent.result is None:
-                    agent.entries = 0
-                    loop.step(agent.root)  # type: ignore[arg-type]
+            _step_all(engine, following)
             if engine.records is not None:
                 engine.records.flush()
     except FatalError as exc:
         return exc.args[0], exc.traceback, exc
     return None, "", None
+
+
+def _step_all(engine: Engine, tick: int) -> None:
+    """Every running agent's tick; then the conditions of the breakpoints, at its end."""
+    step = engine.loop.step
+    for agent in engine.agents:
+        if agent.result is None:
+            agent.entries = 0
+            step(agent.root)  # type: ignore[arg-type]
+    if engine.breaks is not None:
+        check_conditions(engine.breaks, engine.agents, tick)
 
 
 def _following(engine: Engine, failures: Failures, operator: Operator) -> int | None:
@@ -133,6 +148,8 @@ def _begin(engine: Engine, operator: Operator, failures: Failures, top: RMachine
     if not paused:
         failures.apply(0)
         _start(engine, top, options)
+        if engine.breaks is not None:
+            check_conditions(engine.breaks, engine.agents, 0)
     return paused
 
 

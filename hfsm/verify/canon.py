@@ -30,7 +30,7 @@ SKIPPED: dict[str, frozenset[str]] = {
     "RunClock": frozenset({"_time", "spans", "dt"}),
     "Ledger": frozenset({"records"}),
     "Arcs": frozenset({"records"}),
-    "Mailbox": frozenset({"by_name"}),
+    "Messaging": frozenset({"by_name"}),
     "ChoosingWorld": frozenset({"decider", "n", "posted", "tick", "given", "delay", "flying"}),
     "AgentResult": frozenset({"time"}),
 }

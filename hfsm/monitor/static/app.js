@@ -9,12 +9,12 @@ const $ = id => document.getElementById(id);
 async function start() {
   const meta = await (await fetch("/api/meta")).json();
   page.machines = meta.machines; page.live = meta.live;
-  $("title").textContent = `hfsm monitor: ${meta.title}`;
+  $("title").textContent = clip(`hfsm monitor: ${meta.title}`);
   const first = await (await fetch("/api/records?from=0")).json();
   replay.add(first.records);
   page.ended = first.ended;
   page.control = meta.control;
-  if (meta.video) { $("video").src = meta.video; $("video-box").hidden = false; }
+  showVideo(meta.video);
   if (page.live && !page.ended) follow(first.next);
   seek(page.live ? replay.end : 0);  // a live run that waits (for its operator) shows where it stands
   status();
@@ -22,11 +22,21 @@ async function start() {
 
 function follow(from) {
   const source = new EventSource(`/api/stream?from=${from}`);
+  // Records are taken as they come; the page is drawn at most once a frame, so a fast run makes it
+  // skip frames, never fall behind by a backlog of drawings.
   source.onmessage = event => {
     replay.add(JSON.parse(event.data));
-    if ($("follow").checked) seek(replay.end); else render();
+    if (page.drawing) return;
+    page.drawing = requestAnimationFrame(() => {
+      page.drawing = 0;
+      if ($("follow").checked) seek(replay.end); else render();
+    });
   };
-  source.addEventListener("end", () => { page.ended = true; source.close(); status(); render(); });
+  source.addEventListener("end", () => {
+    page.ended = true; source.close(); status(); render();
+    if (window.hfsm.endControls) window.hfsm.endControls();
+    awaitVideo();
+  });
 }
 
 function status() {
@@ -49,6 +59,7 @@ function render() {
   drawSequence(replay, $("sequence"), page.ended);
   drawMarks(replay, $("marks"));
   refreshFigure();
+  videoFollows(page.time);
   status();
 }
 
@@ -76,7 +87,7 @@ function search() {
   box.replaceChildren(hits.length ? `${hits.length} found:` : "no state of that name in the figures shown");
   for (const hit of hits.slice(0, 50)) {
     const link = document.createElement("button");
-    link.type = "button"; link.className = "hit"; link.textContent = `${hit.agent}: ${hit.key}`;
+    link.type = "button"; link.className = "hit"; link.textContent = clip(`${hit.agent}: ${hit.key}`);
     link.onclick = () => { mark(hit.node); hit.node.scrollIntoView({ block: "center" }); };
     box.append(" ", link);
   }
@@ -98,7 +109,7 @@ $("agents").addEventListener("click", event => {
   page.selected = [...block.dataset.key.split("/").slice(1), name].join("/");
   for (const old of document.querySelectorAll("g.node.selected")) old.classList.remove("selected");
   g.classList.add("selected");
-  $("selected").textContent = `selected: ${page.selected}`;
+  $("selected").textContent = clip(`selected: ${page.selected}`);
 });
 
 // Keys: space plays or pauses, arrows step a tick with records, b toggles a breakpoint on the
@@ -120,5 +131,6 @@ document.addEventListener("keydown", event => {
 document.addEventListener("keyup", event => { if (event.key === " " && event.target.closest("button")) event.preventDefault(); });
 
 setUpZoom();
+setUpVideo();
 window.hfsm = { replay, seek, page };
 start();

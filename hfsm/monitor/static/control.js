@@ -12,12 +12,12 @@ async function ask(body) {
     body: JSON.stringify(body),
   });
   const said = await answer.json();
-  $("op-said").textContent = answer.ok ? `sent: ${body.do}` : `refused: ${said.error}`;
+  $("op-said").textContent = clip(answer.ok ? `sent: ${body.do}` : `refused: ${said.error}`);
   if (answer.ok) showBreaks(said.breaks);
   return answer.ok;
 }
 
-function showBreaks(breaks) { operator.breaks = breaks; $("op-breaks").textContent = breaks.length ? `breakpoints: ${breaks.join(", ")}` : ""; }
+function showBreaks(breaks) { operator.breaks = breaks; $("op-breaks").textContent = clip(breaks.length ? `breakpoints: ${breaks.join(", ")}` : ""); }
 
 function heldNow() {
   // the held records whose state has not been left (nor answered) since
@@ -33,15 +33,17 @@ function heldNow() {
 
 function showHeld() {
   const held = heldNow();
-  $("op-held").textContent = held.map(r => `${r.agent}: ${r.path.slice(1).join("/")} holds '${r.event}' (needs ${r.level})`).join("; ");
+  $("op-held").textContent = clip(held.map(r => `${r.agent}: ${r.path.slice(1).join("/")} holds '${r.event}' (needs ${r.level})`).join("; "));
 }
 
+// Only on a live run that goes on (the server sends `control` only then) and opened with its token.
 function setUp() {
-  if (!page.control || !operator.token) return;
+  if (!page.live || page.ended || !page.control || !operator.token) return;
   $("operator").hidden = false;
   for (const name of page.control.agents) {
     const option = document.createElement("option");
-    option.textContent = name;
+    option.textContent = clip(name);
+    option.value = name;
     $("op-agent").appendChild(option);
   }
   showBreaks(page.control.breaks);
@@ -60,7 +62,14 @@ function setUp() {
   };
   $("op-add-break").onclick = () => ask({ do: "break", spec: $("op-break").value.trim() });
   $("op-clear-breaks").onclick = () => ask({ do: "break", spec: "clear" });
-  setInterval(showHeld, 250);
+  operator.timer = setInterval(showHeld, 250);
+}
+
+// The run has ended: nothing is left to control.
+function endControls() {
+  $("operator").hidden = true;
+  clearInterval(operator.timer);
+  page.control = null;
 }
 
 // Add the breakpoint, or remove it when set (the server only clears all: the others are set again).
@@ -74,4 +83,5 @@ async function toggleBreak(spec) {
 
 const waitForMeta = setInterval(() => { if (page.control !== undefined) { clearInterval(waitForMeta); setUp(); } }, 50);
 window.hfsm.ask = ask;
+window.hfsm.endControls = endControls;
 window.hfsm.toggleBreak = spec => (operator.token && page.control ? toggleBreak(spec) : Promise.resolve(false));

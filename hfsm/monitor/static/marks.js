@@ -15,7 +15,11 @@ function markOf(r) {
   return null;
 }
 
-// Take the records added since the last call; redraw every mark (their places change as the run grows).
+// Take the records added since the last call; redraw the marks (their places change as the run
+// grows): at most one per kind in each of SLOTS places along the track, so a run with many
+// thousands of messages draws a few hundred marks; a live run's at most twice a second.
+const SLOTS = 400;
+
 function drawMarks(replay, box) {
   for (; marks.seen < replay.records.length; marks.seen += 1) {
     const r = replay.records[marks.seen];
@@ -24,13 +28,22 @@ function drawMarks(replay, box) {
   }
   const end = replay.end || 1;
   if (box.dataset.count === String(marks.list.length) && box.dataset.end === String(end)) return;
+  const now = performance.now();
+  if (page.live && !page.ended && now - (marks.drawn || 0) < 500) return;
+  marks.drawn = now;
   box.dataset.count = String(marks.list.length); box.dataset.end = String(end);
-  box.replaceChildren(...marks.list.map(m => {
+  const slots = new Map();
+  for (const m of marks.list) {
+    const key = `${m.kind} ${Math.round((SLOTS * m.t) / end)}`;
+    const slot = slots.get(key);
+    if (slot) slot.more += 1; else slots.set(key, { mark: m, more: 0 });
+  }
+  box.replaceChildren(...[...slots.values()].map(({ mark: m, more }) => {
     const node = document.createElement("span");
     node.className = `mark ${m.kind}`;
     node.style.left = `${(100 * m.t) / end}%`;
     node.dataset.t = String(m.t);
-    node.title = `${fmt(m.t)} s: ${m.text}`;
+    node.title = clip(`${fmt(m.t)} s: ${m.text}${more ? ` (and ${more} more here)` : ""}`);
     return node;
   }));
 }

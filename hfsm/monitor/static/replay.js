@@ -3,17 +3,25 @@
 // active states at every depth, timers, attempts, vars and mailbox; the messages; the room's poses.
 
 class Replay {
-  constructor() { this.records = []; this.reset(); }
+  constructor() { this.records = []; this.names = []; this.known = new Set(); this.posed = false; this.reset(); }
 
   reset() {
     this.applied = 0;
     this.agents = new Map();   // name -> {active: Map(key -> entry), mailbox: [], result, failed}
-    this.messages = [];        // {t, from, to, message, receipts: [{agent, t}]}
+    this.sentNames = new Set(); // the names of the messages sent so far
     this.poses = null;         // the latest pose record
     this.lastKind = null;
   }
 
-  add(records) { for (const r of records) this.records.push(r); }
+  // Records as they come; the agents' names and whether any pose came are kept as they do (a long
+  // live run is never scanned whole again for them).
+  add(records) {
+    for (const r of records) {
+      this.records.push(r);
+      if (r.kind === "pose") this.posed = true;
+      else if (r.agent && !this.known.has(r.agent)) { this.known.add(r.agent); this.names.push(r.agent); }
+    }
+  }
 
   get end() { return this.records.length ? this.records[this.records.length - 1].t : 0; }
 
@@ -75,15 +83,11 @@ class Replay {
         break;
       }
       case "send":
-        this.messages.push({ t: r.t, from: r.agent, to: r.to, message: r.message, data: r.data, receipts: [] });
+        this.sentNames.add(r.message);
         break;
-      case "receive": {
+      case "receive":
         a.mailbox.push({ message: r.message, sender: r.sender, t: r.t, data: r.data });
-        const sent = this.messages.find(m => m.from === r.sender && m.message === r.message &&
-          (m.to === r.agent || m.to === "others" || m.to === "all") && !m.receipts.some(x => x.agent === r.agent));
-        if (sent) sent.receipts.push({ agent: r.agent, t: r.t });
         break;
-      }
       case "failed":
         a.failed = r.reason || "failed";
         if (a.active.size) a.final = a.before || new Map(a.active);
@@ -104,25 +108,32 @@ class Replay {
     if (r.machine_deadline !== undefined) frame.machineDeadline = r.machine_deadline;
   }
 
-  isMessage(name) { return this.messages.some(m => m.message === name); }
+  isMessage(name) { return this.sentNames.has(name); }
 
   // Every message of the whole trace with when each addressee got it (null: never), whatever the
   // time shown: so a message still in flight is told apart from one the radio lost.
+  // Kept up as records come: a receive is matched to the oldest send of that message from that
+  // sender still awaited by that agent.
   fates() {
-    if (this._fates && this._fatesOf === this.records.length) return this._fates;
+    if (!this._fates) { this._fates = []; this._fatesOf = 0; this._awaited = new Map(); }
     const names = this.agentNames();
-    const sends = [];
-    for (const r of this.records) {
+    for (; this._fatesOf < this.records.length; this._fatesOf += 1) {
+      const r = this.records[this._fatesOf];
       if (r.kind === "send") {
         const to = r.to === "others" ? names.filter(n => n !== r.agent) : r.to === "all" ? names : [r.to];
-        sends.push({ t: r.t, from: r.agent, message: r.message, got: Object.fromEntries(to.map(n => [n, null])) });
+        const m = { t: r.t, from: r.agent, message: r.message, got: Object.fromEntries(to.map(n => [n, null])) };
+        this._fates.push(m);
+        for (const n of to) {
+          const key = JSON.stringify([r.agent, r.message, n]);
+          if (!this._awaited.has(key)) this._awaited.set(key, []);
+          this._awaited.get(key).push(m);
+        }
       } else if (r.kind === "receive") {
-        const m = sends.find(s => s.from === r.sender && s.message === r.message && s.got[r.agent] === null);
-        if (m) m.got[r.agent] = r.t;
+        const waiting = this._awaited.get(JSON.stringify([r.sender, r.message, r.agent]));
+        if (waiting && waiting.length) waiting.shift().got[r.agent] = r.t;
       }
     }
-    this._fates = sends; this._fatesOf = this.records.length;
-    return sends;
+    return this._fates;
   }
 
   // The states to draw: the active ones, or once the agent has ended those active at its end.
@@ -131,7 +142,7 @@ class Replay {
     return a.active.size || !a.final ? a.active : a.final;
   }
 
-  hasPoses() { return this.records.some(r => r.kind === "pose"); }
+  hasPoses() { return this.posed; }
 
   // The deepest active path of an agent (the first entered at each depth), for the breadcrumb.
   activePath(agentName) {
@@ -147,11 +158,7 @@ class Replay {
     return [...this.shown(agentName).values()].filter(e => e.path.length === depth + 1 && e.key.startsWith(prefix));
   }
 
-  agentNames() {
-    const names = [];
-    for (const r of this.records) if (r.kind !== "pose" && r.agent && !names.includes(r.agent)) names.push(r.agent);
-    return names;
-  }
+  agentNames() { return this.names; }
 }
 
 if (typeof module !== "undefined") module.exports = { Replay };

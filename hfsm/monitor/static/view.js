@@ -4,12 +4,13 @@
 // room from above, and the messages as a sequence diagram.
 
 const SVGNS = "http://www.w3.org/2000/svg";
+const MAILBOX_SHOWN = 20;           // the newest messages of a mailbox shown
 const folded = new Set();          // keys of blocks the user folded; kept across redraws
 
 function el(tag, attrs = {}, text = "") {
   const node = document.createElement(tag);
   for (const [k, v] of Object.entries(attrs)) node.setAttribute(k, v);
-  if (text) node.textContent = text;
+  if (text) node.textContent = clip(text);
   return node;
 }
 
@@ -41,7 +42,7 @@ function drawAgent(replay, machines, name, column) {
   const a = replay.agent(name);
   column.classList.toggle("failed", !!a.failed);
   const result = a.failed ? `failed: ${a.failed}` : a.result !== null ? `ended in '${a.result}'` : "";
-  column.querySelector(".result").textContent = result;
+  column.querySelector(".result").textContent = clip(result);
   const tree = column.querySelector(".tree");
   const shown = replay.shown(name);
   column.classList.toggle("ended", shown !== a.active);
@@ -50,8 +51,9 @@ function drawAgent(replay, machines, name, column) {
   reconcile(tree, roots.map(e => e.key), key => block(replay, machines, name, shown.get(key)),
             (node, key) => updateBlock(replay, machines, name, shown.get(key), node));
   const box = column.querySelector(".mailbox");
-  box.textContent = a.mailbox.length
-    ? "mailbox: " + a.mailbox.map(m => `${m.message} from ${m.sender}`).join(", ") : "mailbox: empty";
+  const waiting = a.mailbox.slice(-MAILBOX_SHOWN).map(m => `${m.message} from ${m.sender}`).join(", ");
+  const more = a.mailbox.length > MAILBOX_SHOWN ? `${a.mailbox.length - MAILBOX_SHOWN} more, then ` : "";
+  box.textContent = clip(a.mailbox.length ? `mailbox: ${more}${waiting}` : "mailbox: empty");
   if (a.lastBarrier) {
     const b = a.lastBarrier;
     box.append(el("div", { class: "barrier-passed" },
@@ -130,11 +132,11 @@ function block(replay, machines, agentName, entry) {
     const id = agentName + ":" + entry.key;
     if (node.open) folded.delete(id); else folded.add(id);
   });
-  const svg = machines[entry.do];
+  const svg = figureOf(machines, entry.do);
   node.append(el("summary"), el("div", { class: "facts" }));
   if (svg) {
     const drawing = el("div", { class: "drawing", "data-machine": entry.do });
-    drawing.innerHTML = svg;
+    drawing.append(svg);
     drawing.prepend(el("button", { class: "enlarge", type: "button", title: "open full size (zoom, pan)" }, "\u2922"));
     node.append(drawing);
   }
@@ -142,10 +144,19 @@ function block(replay, machines, agentName, entry) {
   return node;
 }
 
+// A machine's figure, made safe once (safesvg.js) and copied for each block that shows it.
+const figures = new Map();
+function figureOf(machines, name) {
+  if (!machines[name]) return null;
+  if (!figures.has(name)) figures.set(name, safeSvg(machines[name]));
+  const svg = figures.get(name);
+  return svg ? svg.cloneNode(true) : null;
+}
+
 function updateBlock(replay, machines, agentName, entry, node) {
   const name = entry.path[entry.path.length - 1];
   const callee = entry.do && entry.do !== name ? ` (${entry.do})` : "";
-  node.querySelector(":scope > summary").textContent = name + callee;
+  node.querySelector(":scope > summary").textContent = clip(name + callee);
   node.querySelector(":scope > summary").setAttribute("data-path", entry.key);
   const facts = [`state.time ${fmt(replay.time - entry.t)} s`];
   if (entry.attempt > 1) facts.push(`attempt ${entry.attempt}`);
@@ -211,7 +222,7 @@ function drawRoom(replay, canvas, note, live = false) {
     const [cx, cy] = px(x, y);
     ctx.strokeStyle = "#d22"; ctx.lineWidth = 2; ctx.beginPath();
     ctx.moveTo(cx - 6, cy - 6); ctx.lineTo(cx + 6, cy + 6); ctx.moveTo(cx - 6, cy + 6); ctx.lineTo(cx + 6, cy - 6);
-    ctx.stroke(); ctx.lineWidth = 1; ctx.fillStyle = "#fdd"; ctx.fillText(id, cx + 8, cy + 12);
+    ctx.stroke(); ctx.lineWidth = 1; ctx.fillStyle = "#fdd"; ctx.fillText(clip(id).slice(0, 40), cx + 8, cy + 12);
   }
   for (const [name, [x, y, yaw]] of Object.entries(pose.robots || {})) {
     const [cx, cy] = px(x, y);
@@ -219,7 +230,7 @@ function drawRoom(replay, canvas, note, live = false) {
     ctx.fillStyle = failed ? "#999" : "#f4a340"; ctx.beginPath(); ctx.arc(cx, cy, 6, 0, 2 * Math.PI); ctx.fill();
     ctx.strokeStyle = "#fff"; ctx.beginPath(); ctx.moveTo(cx, cy);
     ctx.lineTo(cx + 10 * Math.cos(yaw), cy - 10 * Math.sin(yaw)); ctx.stroke();
-    ctx.fillStyle = "#fff"; ctx.fillText(name, cx + 8, cy - 8);
+    ctx.fillStyle = "#fff"; ctx.fillText(clip(name).slice(0, 40), cx + 8, cy - 8);
   }
 }
 
@@ -255,6 +266,6 @@ function drawSequence(replay, box, ended) {
 function svgEl(tag, attrs, text = "") {
   const node = document.createElementNS(SVGNS, tag);
   for (const [k, v] of Object.entries(attrs)) if (v !== "") node.setAttribute(k, v);
-  if (text) node.textContent = text;
+  if (text) node.textContent = clip(text);
   return node;
 }

@@ -8,7 +8,7 @@ function openFigure(drawing) {
   zoom.source = drawing; zoom.scale = 1; zoom.x = 0; zoom.y = 0;
   const block = drawing.closest("details.block");
   const agent = drawing.closest(".agent");
-  $("viewer-title").textContent = `${agent ? agent.dataset.agent : ""}: ${block ? block.dataset.key : ""}`;
+  $("viewer-title").textContent = clip(`${agent ? agent.dataset.agent : ""}: ${block ? block.dataset.key : ""}`);
   $("viewer").hidden = false;
   refreshFigure();
   fitFigure();

@@ -1,0 +1,79 @@
+"""Breakpoints on a condition (`cond:EXPR[@AGENT]`): tried at the end of every tick for each running
+agent, over the vars of every machine it runs (the innermost's value of a name shared by several)
+and its inputs; the run pauses at the start of the next tick when one turns true (false before its
+first try). A condition that cannot be evaluated (a var no running machine has, a type error) is
+false; it never changes what the run does."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Sequence
+from typing import Any
+
+from hfsm.expr import ExprValueError, Scope
+from hfsm.runtime.agent import Agent, Frame
+from hfsm.runtime.breaks import Breaks
+
+
+def check(breaks: Breaks, agents: Sequence[Agent], tick: int) -> None:
+    """Try every condition for every running agent; note the first that turned true as the hit."""
+    for point in breaks.points:
+        if point.test is None:
+            continue
+        for agent in agents:
+            if agent.result is not None or agent.root is None:
+                continue
+            if point.agent is not None and agent.name != point.agent:
+                continue
+            key = (point.text, agent.name)
+            now = _holds(point.test, agent, tick)
+            if now and not breaks.was.get(key, False) and breaks.hit is None:
+                breaks.hit = point.text
+            breaks.was[key] = now
+
+
+def _holds(test: Any, agent: Agent, tick: int) -> bool:
+    known: dict[str, Any] = {}
+    for frame in _frames(agent.root):  # type: ignore[arg-type]
+        known.update(frame.vars)
+    try:
+        return test(Scope({}, known, agent.name, _Inputs(agent, tick))) is True
+    except Exception:  # a condition that cannot be evaluated is false
+        return False
+
+
+def _frames(frame: Frame) -> Iterator[Frame]:
+    """The running machine frames of an agent, outermost first (regions in their order)."""
+    yield frame
+    below = frame.below
+    if below.__class__ is Frame:
+        yield from _frames(below)
+    elif below.__class__ is list:
+        for region in below:
+            if region.below.__class__ is Frame:
+                yield from _frames(region.below)
+
+
+class _Inputs:
+    """A condition's live names: the agent's inputs (read through its own once-a-tick cache) only."""
+
+    def __init__(self, agent: Agent, tick: int) -> None:
+        self.agent = agent
+        self.tick = tick
+
+    def input(self, name: str) -> Any:
+        return self.agent.inputs.read(name, self.tick)
+
+    def state_time(self) -> float:
+        raise ExprValueError("'state.time' cannot be read in a condition")
+
+    def state_attempt(self) -> int:
+        raise ExprValueError("'state.attempt' cannot be read in a condition")
+
+    def machine_time(self) -> float:
+        raise ExprValueError("'machine.time' cannot be read in a condition")
+
+    def scope_name(self) -> str:
+        raise ExprValueError("'scope.name' cannot be read in a condition")
+
+    def scope_agents(self) -> list[str]:
+        raise ExprValueError("'scope.agents' cannot be read in a condition")
