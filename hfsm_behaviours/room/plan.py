@@ -104,7 +104,7 @@ def groups_after(plan: Plan, lost: Sequence[str], done: Sequence[str]) -> list[d
             continue
         while len(needy["members"]) < PAIR:
             free = [(g, m) for g in groups if g["task"]["id"] in finished for m in g["members"]]
-            if not free:  # a lone robot of another table left short: two short tables make one pair
+            if not free and len(needy["members"]) == PAIR - 1:  # two lone robots of short tables pair up
                 free = [(g, m) for g in groups if g is not needy and g["task"]["id"] not in finished
                         and len(g["members"]) < PAIR for m in g["members"]]
             if not free:
