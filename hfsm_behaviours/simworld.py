@@ -167,7 +167,8 @@ class SimWorld:
         for name, senses in sorted(self._senses.items()):
             start = self.world.scenario.told_start(name)
             out[name] = {"start": [start["x"], start["y"], start["yaw"]],
-                         **{k: {"t": round(t * self.dt, 9), "value": v} for k, (t, v) in sorted(senses.last.items())}}
+                         **{k: {"t": round(t * self.dt, 9), "value": v}
+                            for k, (t, v) in sorted(senses.last.items())}}
         return out
 
     def label_sink(self) -> Labels:

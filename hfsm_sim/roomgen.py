@@ -27,7 +27,8 @@ STRATA: dict[str, str] = {
     "walls": "a table 0.3-0.6 m from a wall, or from two walls in a corner",
     "narrow": "a room 4-5 m across and 9-16 m long",
     "crowded": "the robots packed 0.8-1.0 m apart round one spot or corner",
-    "failures": "one or two robots failing at any time (2-400 s), or a rate of 0.005-0.05 per robot per minute",
+    "failures": "one or two robots failing at any time (2-400 s), or a rate of 0.005-0.05 per robot "
+                "per minute",
     "loss": "radio loss 5-30 %",
     "mixed": "each of the above drawn at random, together",
 }
@@ -195,7 +196,8 @@ def _failures(rng: random.Random, names: list[str]) -> list[dict[str, Any]]:
     if kind == "rate":
         return [{"rate": _r(rng.uniform(0.005, 0.05), 3), "reason": "roomgen: failure rate"}]
     chosen = rng.sample(names, 1 if kind == "one" else 2)
-    return [{"robot": name, "at": _r(rng.uniform(2.0, 400.0)), "reason": "roomgen: failure"} for name in chosen]
+    return [{"robot": name, "at": _r(rng.uniform(2.0, 400.0)), "reason": "roomgen: failure"}
+            for name in chosen]
 
 
 def _features(rng: random.Random, stratum: str) -> set[str]:

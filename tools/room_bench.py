@@ -84,7 +84,9 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--first-seed", type=int, help=f"the first seed of each stratum (default {HELD})")
     p.add_argument("--shard", help="I/N: run only trials I-1, I-1+N, ... and write them to --shards")
     p.add_argument("--shards", type=Path, default=Path("out/room-shards"), help="the shards' folder")
-    p.add_argument("--merge", action="store_true", help="no run: the docs from every shard in --shards (--workers: how many ran at once)")
+    p.add_argument("--merge", action="store_true",
+                   help="no run: the docs from every shard in --shards (--workers: how many ran at once)")
+    p.add_argument("--partial", action="store_true", help="with --merge: the shards there are, not all")
     add_executor_args(p)
     add_results_args(p, "room", "ROOM.md")
     args = p.parse_args(argv)
@@ -94,13 +96,15 @@ def main(argv: list[str] | None = None) -> int:
     if unknown:
         print(f"room_bench: unknown strata {unknown}; strata: {', '.join(STRATA)}", file=sys.stderr)
         return 2
-    numbers = {"rooms": args.rooms, "strata": strata, "max_time": args.max_time, "first_seed": args.first_seed}
+    numbers = {"rooms": args.rooms, "strata": strata, "max_time": args.max_time,
+               "first_seed": args.first_seed}
     config = replace(config, **{name: v for name, v in numbers.items() if v is not None})
     only = {int(i) for i in args.trials.split(",") if i} if args.trials else None
     command = " ".join(["tools/room_bench.py", *(argv if argv is not None else sys.argv[1:])])
     if args.merge:
         try:
-            results = merge_shards(sorted(args.shards.glob(f"{LABEL}-*-of-*.jsonl")))
+            paths = sorted(args.shards.glob(f"{LABEL}-*-of-*.jsonl"))
+            results = merge_shards(paths, complete=not args.partial)
         except SweepError as exc:
             print(f"room_bench: {exc}", file=sys.stderr)
             return 2
@@ -126,8 +130,8 @@ def main(argv: list[str] | None = None) -> int:
             meta_path = args.shards / "meta.json"
             old = json.loads(meta_path.read_text(encoding="utf-8")) if meta_path.is_file() else {}
             now = time.time()
-            meta = {"start": min(old.get("start", now), now - saved["wall"]), "end": max(old.get("end", now), now),
-                    "load": old.get("load", load), "commit": commit}
+            meta = {"start": min(old.get("start", now), now - saved["wall"]),
+                    "end": max(old.get("end", now), now), "load": old.get("load", load), "commit": commit}
             meta_path.write_text(json.dumps(meta) + "\n", encoding="utf-8")
             print(f"wrote shard {args.shard} ({len(results)} rooms)", file=sys.stderr)
             return 0

@@ -43,7 +43,8 @@ def room_assign(ctx: Context, *, plan: dict[str, Any], lost: list[Any], done: li
         return Outcome("excluded", job={}, drawn={})
     local = {"table_local": to_local(start, job["at"]) if job["at"] else [],
              "toward_local": to_local(start, job["toward"]) if job["toward"] else []}
-    return Outcome("assigned", job={**job, **local}, drawn=drawn(plan, job, [str(t) for t in done], where or {}))
+    shown = drawn(plan, job, [str(t) for t in done], where or {})
+    return Outcome("assigned", job={**job, **local}, drawn=shown)
 
 
 @primitive(outcomes=["located"], outputs=["seen"])

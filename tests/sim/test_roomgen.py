@@ -63,8 +63,8 @@ def test_each_stratum_draws_what_it_names() -> None:
         near = [min(math.hypot(a["x"] - b["x"], a["y"] - b["y"]) for b in crowded if b is not a) for a in crowded]
         assert sum(d <= 1.02 for d in near) >= len(near) - 1  # a grid of 0.8-1.0 m (tables may cut it)
         failures = draw(seed, "failures")["failures"]
-        assert failures and (len(failures) in (1, 2) and all("at" in f for f in failures)
-                             or "rate" in failures[0] and 0.005 <= failures[0]["rate"] <= 0.05)
+        assert failures and ((len(failures) in (1, 2) and all("at" in f for f in failures))
+                             or ("rate" in failures[0] and 0.005 <= failures[0]["rate"] <= 0.05))
         assert 0.05 <= draw(seed, "loss")["radio"]["loss"] <= 0.3
         for stratum in ("open", "close", "walls", "narrow", "crowded"):
             data = draw(seed, stratum)

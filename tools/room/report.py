@@ -98,9 +98,11 @@ def _stratum_row(name: str, rows: list[Result]) -> str:
     touched = sum(1 for r in rows if r["collisions"])
     walls = [r["wall"] for r in rows]
     sim = _median([r["clear_time"] for r in rows if r.get("success") and r["clear_time"] is not None])
-    return (f"| {name} | {len(rows)} | {ok} ({100 * ok / max(1, len(rows)):.0f} %) | {100 * lo:.0f}-{100 * hi:.0f} % | "
+    return (f"| {name} | {len(rows)} | {ok} ({100 * ok / max(1, len(rows)):.0f} %) | "
+            f"{100 * lo:.0f}-{100 * hi:.0f} % | "
             f"{honest} | {100 * ok / max(1, clearable):.0f} % (>= {100 * lo2:.0f} %) | {touched} | "
-            f"{sum(r['collisions'] for r in rows)} | {_s(sim)} | {_s(_median(walls))} | {_s(max(walls, default=None))} |")
+            f"{sum(r['collisions'] for r in rows)} | {_s(sim)} | {_s(_median(walls))} | "
+            f"{_s(max(walls, default=None))} |")
 
 
 def _plot(results: list[Result], path: Path) -> None:
@@ -111,7 +113,8 @@ def _plot(results: list[Result], path: Path) -> None:
                          ("failed", "tab:red")):
         rows = [r for r in results if verdict(r) == name]
         if rows:
-            ax.scatter([r["n"] for r in rows], [r["wall"] for r in rows], s=14, alpha=0.7, color=colour, label=name)
+            ax.scatter([r["n"] for r in rows], [r["wall"] for r in rows], s=14, alpha=0.7, color=colour,
+                       label=name)
     ax.axhline(WALL_EACH, color="grey", linewidth=1, linestyle="--")
     ax.set_xlabel("robots in the room")
     ax.set_ylabel("wall seconds (2 rooms at once)")
@@ -126,7 +129,8 @@ def _plot(results: list[Result], path: Path) -> None:
 def _row(r: Result) -> str:
     fail = "; ".join(f"{f['robot']} {f['at']:.0f} s {f['phase']}" for f in failures(r)) or "none"
     gap = max((d for d in r["distances"] if d is not None), default=float("nan"))
-    return (f"| {r['trial']} | {r['experiment']} | {r['seed']} | {r['room'][0]:g} x {r['room'][1]:g} | {r['k']} | "
+    return (f"| {r['trial']} | {r['experiment']} | {r['seed']} | {r['room'][0]:g} x {r['room'][1]:g} | "
+            f"{r['k']} | "
             f"{r['n']} | {r['loss']:.2f} | {fail} | {verdict(r)} | {_s(r['clear_time'])} | {gap:.2f} | "
             f"{r['collisions']} | {r['wall']:.0f} |")
 
@@ -142,7 +146,8 @@ def lines_for(results: list[Result], command: str, wall: float, workers: int, lo
     out = [
         "### Results",
         "",
-        f"`nice -n 15 .venv/bin/python {command}`: {len(results)} rooms (seeds {seed_text} of each stratum) in "
+        f"`nice -n 15 .venv/bin/python {command}`: {len(results)} rooms (seeds {seed_text} of each "
+        "stratum) in "
         f"{wall / 60:.1f} min wall with {workers} worker processes on the shared 2-core machine "
         f"(`uptime` before the run: {load}). A room is a **success** when every table is within 0.15 m of a "
         "wall within 35 simulated minutes, nothing was dropped but by a robot failing mid-carry, and no "
@@ -151,11 +156,13 @@ def lines_for(results: list[Result], command: str, wall: float, workers: int, lo
         "",
         f"- **All rooms: {rate_text(ok, len(results))} successes**; honest ends {honest}; over the rooms "
         f"that ended otherwise: {rate_text(ok, len(results) - honest)}.",
-        f"- Tight strata together ({', '.join(TIGHT)}): {rate_text(sum(1 for r in tight if r.get('success')), len(tight))}.",
+        f"- Tight strata together ({', '.join(TIGHT)}): "
+        f"{rate_text(sum(1 for r in tight if r.get('success')), len(tight))}.",
         f"- Robot-robot contacts: {sum(r['collisions'] for r in results)} in all; rooms with any: "
         f"{sum(1 for r in results if r['collisions'])} of {len(results)}.",
         f"- Wall time of one room: median {_s(_median(walls))} s (target <= {WALL_TARGET:.0f} s), max "
-        f"{_s(max(walls, default=None))} s; over {WALL_EACH:.0f} s: {sum(1 for w in walls if w > WALL_EACH)} rooms "
+        f"{_s(max(walls, default=None))} s; over {WALL_EACH:.0f} s: "
+        f"{sum(1 for w in walls if w > WALL_EACH)} rooms "
         f"({workers} rooms running at once on the 2 cores, beside other work).",
     ]
     phases: dict[str, list[bool]] = {}
@@ -165,7 +172,8 @@ def lines_for(results: list[Result], command: str, wall: float, workers: int, lo
     if phases:
         out.append("- Rooms with a failure that were a success anyway, by what the failed robot was doing: "
                    + "; ".join(f"{p}: {sum(v)}/{len(v)}" for p, v in sorted(phases.items())) + ".")
-    out += ["", "| stratum | rooms | successes | Wilson 95 % | honest ends | successes of the rest (lower bound) | "
+    out += ["", "| stratum | rooms | successes | Wilson 95 % | honest ends | "
+            "successes of the rest (lower bound) | "
             "rooms with contacts | contacts | median sim s | median wall s | max wall s |",
             "|---|---|---|---|---|---|---|---|---|---|---|"]
     out += [_stratum_row(s, [r for r in results if r["experiment"] == s]) for s in strata]
@@ -175,7 +183,8 @@ def lines_for(results: list[Result], command: str, wall: float, workers: int, lo
     bad = [r for r in results if not r.get("success")]
     if bad:
         out += ["Rooms that were not a success, with their cause:", ""]
-        out += [f"- trial {r['trial']} ({r['experiment']}, seed {r['seed']}, {verdict(r)}): {cause(r)}." for r in bad]
+        out += [f"- trial {r['trial']} ({r['experiment']}, seed {r['seed']}, {verdict(r)}): {cause(r)}."
+                for r in bad]
         out.append("")
     out += ["<details><summary>Every room</summary>", "",
             "| trial | stratum | seed | room m | K | N | loss | failures | verdict | sim s | worst gap m | "

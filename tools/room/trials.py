@@ -152,6 +152,7 @@ def run_room_trial(trial: RoomTrial) -> dict[str, Any]:
     loss = trial.radio_loss or float(sc.get("radio", {}).get("loss", 0.0))
     head = {"experiment": trial.experiment, "x": trial.x, "seed": trial.seed, "k": len(sc["tables"]),
             "n": len(sc["robots"]), "loss": loss, "max_time": trial.max_time,
-            "room": [sc["room"]["width"], sc["room"]["depth"]]}
+            "room": [sc["room"]["width"], sc["room"]["depth"]],
+            "tables": [str(t["id"]) for t in sc["tables"]]}
     return {**head, **measure(line, result.score, sc, result.outcomes, result.time, result.error),
             "wall": round(result.wall, 2)}
