@@ -112,3 +112,16 @@ def test_polygon_gap_is_never_more_than_between_any_two_corners(x: float, y: flo
     gap = polygon_gap(one, two)
     assert gap <= min(math.dist(p, q) for p in one for q in two) + 1e-9
     assert gap == pytest.approx(polygon_gap(two, one), abs=1e-9)
+
+
+def test_the_scenario_radio_loss_is_the_worlds_unless_the_run_gives_one() -> None:
+    from hfsm_sim import World
+
+    data = {**draw(1, "open"), "radio": {"loss": 0.25}}
+    scenario = scenario_from_dict(data)
+    with World(scenario, 0) as world:
+        assert world.radio.loss == 0.25
+    with World(scenario, 0, radio_loss=0.1) as world:
+        assert world.radio.loss == 0.1
+    with pytest.raises(ValueError, match="loss"):
+        scenario_from_dict({**data, "radio": {"loss": 1.5}})
