@@ -21,8 +21,8 @@ sys.path.insert(0, str(ROOT))
 from hfsm_behaviours.simworld import SimWorld  # noqa: E402
 from hfsm_behaviours.trial import TrialSpec, run_trial  # noqa: E402
 from hfsm_sim import World  # noqa: E402
-from hfsm_sim.scenario import scenario_from_dict  # noqa: E402
 from hfsm_sim.roomgen import draw, write  # noqa: E402
+from hfsm_sim.scenario import scenario_from_dict  # noqa: E402
 from tools.room.trials import RoomTrial, run_room_trial  # noqa: E402
 
 SLICE = [("open", 507), ("walls", 500), ("close", 504), ("crowded", 507), ("failures", 506)]
