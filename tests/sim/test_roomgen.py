@@ -125,3 +125,14 @@ def test_the_scenario_radio_loss_is_the_worlds_unless_the_run_gives_one() -> Non
         assert world.radio.loss == 0.1
     with pytest.raises(ValueError, match="loss"):
         scenario_from_dict({**data, "radio": {"loss": 1.5}})
+
+
+def test_the_world_holds_the_largest_rooms_drawn() -> None:
+    from hfsm_sim import World
+
+    big = next(d for d in (draw(s, "mixed") for s in range(1, 200)) if len(d["tables"]) == 6 and len(d["robots"]) == 16)
+    with World(scenario_from_dict(big), 0) as world:
+        world.advance(0.5)
+        assert len(world.robots) == 16 and world.score()["robot_collisions"] == 0
+        tables = world.poses()["tables"]
+        assert [round(t[2] * 180 / math.pi) % 360 for t in tables] == [round(t["yaw"]) % 360 for t in big["tables"]]
