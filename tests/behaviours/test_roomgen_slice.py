@@ -5,7 +5,8 @@ The rule, fixed before any of them was run, keeps the slice near two minutes: in
 and `failures`, the first room from seed 500 on with one table and two robots (for `failures`, one
 whose first failure comes before 40 s, so that no pair is left). The open room must be a success
 (its table at a wall, no robot-robot contact); the other must end honestly: `stuck`, saying which
-table and why, long before the limit. Also: a room's trace carries what the monitor draws of each
+table and why, long before the limit. Neither does yet: both are strict expected failures, with
+what was seen, so that the suite says when they start to pass. Also: a room's trace carries what the monitor draws of each
 robot's belief, and is the same byte for byte for the same seed."""
 
 from __future__ import annotations
@@ -46,12 +47,16 @@ def _run(stratum: str, seed: int) -> dict[str, Any]:
 
 
 @pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="issue 20 not met: at 900 s table1 is 0.30 m off its wall, 6 robot-robot "
+                   "contacts, the pair still carrying (docs/ROOM.md, Not done)")
 def test_a_generated_room_is_cleared_without_contact() -> None:
     result = _run(*SLICE[0])
     assert result["success"], {k: result[k] for k in ("distances", "collisions", "error", "time")}
 
 
 @pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="issue 20 not met: the run ends at 360.8 s neither cleared nor `stuck` "
+                   "(docs/ROOM.md, Not done)")
 def test_a_generated_room_left_without_a_pair_ends_honestly() -> None:
     result = _run(*SLICE[1])
     assert result["honest"] and result["time"] < 300, {k: result[k] for k in ("stuck", "error", "time")}
