@@ -87,6 +87,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--merge", action="store_true",
                    help="no run: the docs from every shard in --shards (--workers: how many ran at once)")
     p.add_argument("--partial", action="store_true", help="with --merge: the shards there are, not all")
+    p.add_argument("--commit", help="with --merge: the commit the shards ran at (when not run in a git tree)")
     add_executor_args(p)
     add_results_args(p, "room", "ROOM.md")
     args = p.parse_args(argv)
@@ -110,7 +111,7 @@ def main(argv: list[str] | None = None) -> int:
             return 2
         meta = json.loads((args.shards / "meta.json").read_text(encoding="utf-8"))
         saved = {"command": command, "wall": meta["end"] - meta["start"], "workers": args.workers,
-                 "load": meta["load"], "commit": meta["commit"], "results": results}
+                 "load": meta["load"], "commit": args.commit or meta["commit"], "results": results}
         save_results(args.raw, saved)
     elif args.saved:
         saved = json.loads(args.saved.read_text(encoding="utf-8"))

@@ -143,6 +143,9 @@ def lines_for(results: list[Result], command: str, wall: float, workers: int, lo
     honest = sum(1 for r in results if r.get("honest"))
     tight = [r for r in results if r["experiment"] in TIGHT]
     seed_text = f"{seeds[0]}-{seeds[-1]}" if seeds else "-"
+    cap = min([LIMIT, *(r.get("max_time", LIMIT) for r in results)])
+    within = ("35 simulated minutes" if cap >= LIMIT else f"{cap / 60:.0f} simulated minutes (the campaign's "
+              f"`--max-time {cap:.0f}`; the issue allows 35, so this is a lower bound)")
     out = [
         "### Results",
         "",
@@ -150,7 +153,7 @@ def lines_for(results: list[Result], command: str, wall: float, workers: int, lo
         "stratum) in "
         f"{wall / 60:.1f} min wall with {workers} worker processes on the shared 2-core machine "
         f"(`uptime` before the run: {load}). A room is a **success** when every table is within 0.15 m of a "
-        "wall within 35 simulated minutes, nothing was dropped but by a robot failing mid-carry, and no "
+        f"wall within {within}, nothing was dropped but by a robot failing mid-carry, and no "
         "two robots touched; **honest** when it was not cleared but the team ended saying which table no "
         "pair was left for (`stuck`), before the limit and without a contact.",
         "",
