@@ -1,6 +1,6 @@
 """Clear the room's held-back rooms (issue 10: "a held-back set of rooms (other sizes, table layouts,
-failure times) must be cleared"). Issue 10's bench (its tools/room/scenes.py, since replaced by the
-generator hfsm_sim/roomgen.py) never drew these; they were chosen by this rule before any of them was run, and are not changed to pass:
+failure times) must be cleared"). Issue 10's bench rooms (tools/room/scenes.py; the campaign now
+draws from hfsm_sim/roomgen.py) never drew these; they were chosen by this rule before any of them was run, and are not changed to pass:
 
 - sizes: 3-table rooms outside the bench's 8-9 x 5.75-6.75 m (10.5 x 7.5, 7 x 7, 11 x 5.5, 9.5 x 6.5),
   the 2-table room outside its 7-8 x 5-6 m (6.5 x 6.5);
