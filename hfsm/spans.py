@@ -27,6 +27,8 @@ def span(line: str, col: int, *, width: int = 0) -> tuple[int, int]:
         return start, _quoted(line, i) + 1
     if char in _PAIRS:
         return start, _bracketed(line, i) + 1
+    if line.startswith("${", i):
+        return start, _bracketed(line, i + 1) + 1  # the `${…}`, not the quote after it
     if _inside_expression(line, i) and _NAME.match(line, i):
         match = _NAME.match(line, i)
         assert match is not None

@@ -92,7 +92,8 @@ def replay(
 
 
 def read_trace(path: Path) -> list[dict[str, Any]]:
-    """Every record of a JSONL trace; a line that is not a JSON object is `FILE:LINE: message`."""
+    """Every record of a JSONL trace (the run's own records have no agent); a line that is not a JSON
+    object is `FILE:LINE: message`."""
     if not path.is_file():
         raise UsageError(f"{path}: not a trace file")
     if path.stat().st_size > MAX_TRACE_BYTES:
@@ -119,8 +120,9 @@ def _is_record(record: object) -> bool:
     if not isinstance(record, dict):
         return False
     path, t, agent = record.get("path"), record.get("t", 0.0), record.get("agent", "")
+    named = agent is None or isinstance(agent, str)
     return (isinstance(path, list) and all(isinstance(p, str) for p in path)
-            and isinstance(t, int | float) and not isinstance(t, bool) and isinstance(agent, str))
+            and isinstance(t, int | float) and not isinstance(t, bool) and named)
 
 
 def top_name(records: list[dict[str, Any]], path: Path) -> str:

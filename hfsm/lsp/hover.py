@@ -75,7 +75,7 @@ def _node_text(
     if node is None:
         return None
     path, m, specs = node.path, machine.model, analysis.specs
-    if path[-1:] == ("do",) or (len(path) > 2 and path[-1] == "do"):
+    if path[-1] == "do":
         spec = specs.get(node.text)
         return describe(spec) if spec else None
     if len(path) == 2 and path[0] == "states" and node.is_key:

@@ -18,7 +18,7 @@ from pathlib import Path
 from lsprotocol import types as lsp
 
 from hfsm.library import MachineFile
-from hfsm.lsp.locate import Node, dotted_at, name_range, node_at
+from hfsm.lsp.locate import Node, dotted_at, name_range, node_at, value_at
 from hfsm.model import CallState
 from hfsm.yamlio import Path_
 
@@ -76,7 +76,7 @@ def occurrences(machine: MachineFile, lines: Sequence[str], name: Name) -> list[
         if path[-1] == name.text and _declares(path, name):
             found.append(name_range(lines, line, col)[0])
     for path, (line, col) in doc.values.items():
-        value = _value(doc.data, path)
+        value = value_at(doc, path)
         if value == name.text and _names(path, name):
             found.append(name_range(lines, line, col)[0])
     if name.kind in ("var", "param"):
@@ -108,17 +108,6 @@ def _in_text(lines: Sequence[str], dotted: str) -> list[lsp.Range]:
             start = match.start() + dotted.index(".") + 1
             found.append(lsp.Range(lsp.Position(n, start), lsp.Position(n, match.end())))
     return found
-
-
-def _value(data: object, path: Path_) -> object:
-    for part in path:
-        if isinstance(data, dict):
-            data = data.get(part)
-        elif isinstance(data, list) and isinstance(part, int) and 0 <= part < len(data):
-            data = data[part]
-        else:
-            return None
-    return data
 
 
 def caller_occurrences(

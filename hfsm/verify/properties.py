@@ -108,7 +108,7 @@ def _upcoming(engine: Engine) -> int | None:
     """The next tick in which something happens (the engine's `wake` left as it was)."""
     wake = engine.wake
     try:
-        return _next_tick(engine, NO_FAILURES)
+        return _next_tick(engine, NO_FAILURES, None)
     finally:
         engine.wake = wake
 

@@ -55,7 +55,7 @@ def first_state(
 
 def next_state(engine: Engine, world: ChoosingWorld, decider: Decider, last: int) -> Ended | None:
     """Run the next tick in which something can happen; why the run cannot go on, or None."""
-    following = _next_tick(engine, NO_FAILURES)
+    following = _next_tick(engine, NO_FAILURES, None)
     if following is None:
         return Ended("blocked", "blocked forever")
     if following > last:

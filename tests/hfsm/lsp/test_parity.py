@@ -21,7 +21,9 @@ from hfsm.cli.run import main
 
 TESTS = Path(__file__).resolve().parents[2]
 LIBS = [TESTS / "spec" / "cases", TESTS / "errors" / "corpus" / "lib"]
-MALFORMED = sorted([*(TESTS / "spec" / "malformed").glob("*.yaml"), *(TESTS / "errors" / "corpus").glob("*.yaml")])
+MALFORMED = sorted(
+    [*(TESTS / "spec" / "malformed").glob("*.yaml"), *(TESTS / "errors" / "corpus").glob("*.yaml")]
+)
 FINDING = re.compile(r"^(\S+):(\d+):(\d+): (error|warning)(?:\[(\w+)\])?: (.*)$")
 
 Seen = tuple[int, int, int, str, str, str]  # line, first column, columns underlined, code, severity, message
@@ -55,7 +57,9 @@ def printed(path: Path, monkeypatch: pytest.MonkeyPatch) -> list[Seen]:
             continue
         carets = lines[i + 3].split("| ", 1)[1]
         start = len(carets) - len(carets.lstrip(" "))
-        seen.append((int(found.group(2)), start, len(carets.strip()), found.group(5), found.group(4), found.group(6)))
+        seen.append(
+            (int(found.group(2)), start, len(carets.strip()), found.group(5), found.group(4), found.group(6))
+        )
     return seen
 
 
@@ -68,7 +72,9 @@ def published(path: Path, diagnostics: list[lsp.Diagnostic]) -> list[Seen]:
         before = text[: d.range.start.character].replace("\t", snippet.TAB)
         under = text[d.range.start.character : d.range.end.character].replace("\t", snippet.TAB)
         severity = "error" if d.severity == lsp.DiagnosticSeverity.Error else "warning"
-        seen.append((d.range.start.line + 1, len(before), max(1, len(under)), str(d.code), severity, d.message))
+        seen.append(
+            (d.range.start.line + 1, len(before), max(1, len(under)), str(d.code), severity, d.message)
+        )
     return seen
 
 

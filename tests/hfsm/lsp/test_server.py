@@ -56,7 +56,9 @@ def change(client: LanguageClient, path: Path, text: str, version: int) -> None:
 
 
 def at(line: int, character: int, path: Path) -> lsp.TextDocumentPositionParams:
-    return lsp.TextDocumentPositionParams(lsp.TextDocumentIdentifier(uri(path)), lsp.Position(line, character))
+    return lsp.TextDocumentPositionParams(
+        lsp.TextDocumentIdentifier(uri(path)), lsp.Position(line, character)
+    )
 
 
 def brief(diagnostics: list[lsp.Diagnostic]) -> list[tuple[int, int, int, str | int | None, str]]:
@@ -82,7 +84,9 @@ async def test_errors_are_published_on_open_with_their_spans_and_all_at_once(cli
 async def test_warnings_are_warnings_and_a_fix_clears_the_errors(client: LanguageClient) -> None:
     path = DATA / "broken.yaml"
     await open_file(client, path)
-    fixed = path.read_text().replace("wiat", "wait").replace("    timeout: 5\n", "").replace("fnish", "finish")
+    fixed = (
+        path.read_text().replace("wiat", "wait").replace("    timeout: 5\n", "").replace("fnish", "finish")
+    )
     change(client, path, fixed, 2)
     found = await diagnostics_of(client, path)
     assert [d.code for d in found] == []
@@ -122,7 +126,9 @@ def _fields(params: lsp.TextDocumentPositionParams) -> dict[str, object]:
 
 
 async def _labels(client: LanguageClient, path: Path, line: int, character: int) -> list[str]:
-    result = await client.text_document_completion_async(lsp.CompletionParams(**_fields(at(line, character, path))))
+    result = await client.text_document_completion_async(
+        lsp.CompletionParams(**_fields(at(line, character, path)))
+    )
     items = result.items if isinstance(result, lsp.CompletionList) else result or []
     return [item.label for item in items]
 
@@ -168,7 +174,9 @@ async def test_references_and_rename_of_a_state_within_the_file(client: Language
         lsp.ReferenceParams(context=lsp.ReferenceContext(include_declaration=True), **_fields(at(6, 3, path)))
     )
     assert sorted((r.range.start.line, r.range.start.character) for r in refs or []) == [(6, 2), (19, 14)]
-    edit = await client.text_document_rename_async(lsp.RenameParams(new_name="fetch_it", **_fields(at(6, 3, path))))
+    edit = await client.text_document_rename_async(
+        lsp.RenameParams(new_name="fetch_it", **_fields(at(6, 3, path)))
+    )
     assert edit is not None and edit.changes is not None
     assert {e.new_text for e in edit.changes[uri(path)]} == {"fetch_it"} and len(edit.changes[uri(path)]) == 2
 
@@ -178,9 +186,14 @@ async def test_renaming_an_outcome_renames_it_in_its_callers(client: LanguageCli
     caller, callee = DATA / "caller.yaml", DATA / "fetch.yaml"
     await open_file(client, caller)
     await open_file(client, callee)
-    edit = await client.text_document_rename_async(lsp.RenameParams(new_name="fetched", **_fields(at(4, 12, callee))))
+    edit = await client.text_document_rename_async(
+        lsp.RenameParams(new_name="fetched", **_fields(at(4, 12, callee)))
+    )
     assert edit is not None and edit.changes is not None
-    assert sorted((e.range.start.line, e.range.start.character) for e in edit.changes[uri(callee)]) == [(4, 11), (9, 15)]
+    assert sorted((e.range.start.line, e.range.start.character) for e in edit.changes[uri(callee)]) == [
+        (4, 11),
+        (9, 15),
+    ]
     assert [(e.range.start.line, e.range.start.character) for e in edit.changes[uri(caller)]] == [(9, 9)]
 
 
@@ -221,3 +234,17 @@ async def test_every_suggestion_is_a_quick_fix(client: LanguageClient) -> None:
         for e in a.edit.changes[uri(path)]
     ]
     assert edits == [(3, 8, "wait"), (4, 4, "timer"), (5, 15, "finish")]
+
+
+@pytest.mark.asyncio(loop_scope="module")
+async def test_a_test_file_gets_hfsm_tests_findings(client: LanguageClient, tmp_path: Path) -> None:
+    (tmp_path / "fetch.yaml").write_text((DATA / "fetch.yaml").read_text())
+    path = tmp_path / "fetch.test.yaml"  # written here: pytest would collect a bad one under tests/
+    path.write_text(
+        "machine: fetch\ntests:\n  gets_it:\n    params: {trys: 2}\n    expect: {outcome: gott}\n"
+    )
+    found = await open_file(client, path)
+    assert [(d.code, d.range.start.line, d.range.start.character, d.message) for d in found] == [
+        ("T303", 3, 13, "'fetch' has no param 'trys'; did you mean 'tries'?"),
+        ("T321", 4, 22, "'fetch' has no outcome 'gott'; did you mean 'got'?"),
+    ]
