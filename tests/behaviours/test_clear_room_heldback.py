@@ -1,6 +1,6 @@
 """Clear the room's held-back rooms (issue 10: "a held-back set of rooms (other sizes, table layouts,
-failure times) must be cleared"). The bench (tools/room/scenes.py) never draws these; they were
-chosen by this rule before any of them was run, and are not changed to pass:
+failure times) must be cleared"). Issue 10's bench rooms (tools/room/scenes.py; the campaign now
+draws from hfsm_sim/roomgen.py) never drew these; they were chosen by this rule before any of them was run, and are not changed to pass:
 
 - sizes: 3-table rooms outside the bench's 8-9 x 5.75-6.75 m (10.5 x 7.5, 7 x 7, 11 x 5.5, 9.5 x 6.5),
   the 2-table room outside its 7-8 x 5-6 m (6.5 x 6.5);
@@ -31,8 +31,9 @@ sys.path.insert(0, str(ROOT))
 
 from hfsm_behaviours.room.claims import claim_walls, crossings  # noqa: E402
 from hfsm_sim.scenario import scenario_from_dict  # noqa: E402
-from tools.room.scenes import REACH  # noqa: E402
 from tools.room.trials import RoomTrial, run_room_trial  # noqa: E402
+
+REACH = 0.5  # clear_room's default `reach`
 
 WIDE = """  # 3 tables, 7 robots, a 10.5 x 7.5 room; table1 1.2 x 0.6 at 20 deg, table3 0.6 x 0.4; r6 (table3's pair, a 4.5 m carry) fails at 163.52 s
 task: table_to_wall

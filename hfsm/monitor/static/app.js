@@ -45,7 +45,7 @@ function render() {
   slider.max = replay.end; slider.value = page.time;
   $("time").textContent = `${fmt(page.time)} s`;
   drawAgents(replay, page.machines, $("agents"));
-  drawRoom(replay, $("room"), $("room-note"));
+  drawRoom(replay, $("room"), $("room-note"), beliefChoice(replay, $("belief")));
   drawSequence(replay, $("sequence"), page.ended);
   status();
 }
@@ -65,6 +65,7 @@ function pause() { page.playing = false; $("play").innerHTML = "&#9654;"; }
 $("play").onclick = () => (page.playing ? pause() : (page.time >= replay.end && seek(0), play()));
 $("step").onclick = () => { pause(); seek(replay.nextTime(page.time)); };
 $("back").onclick = () => { pause(); seek(replay.previousTime(page.time)); };
+$("belief").onchange = () => render();
 $("slider").oninput = event => { pause(); $("follow").checked = false; seek(parseFloat(event.target.value)); };
 
 window.hfsm = { replay, seek, page };
