@@ -7,6 +7,8 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+from hfsm_behaviours.drive.things import BEAMS, things
+
 Point = tuple[float, float]
 Near = list[tuple[float, float, float]]
 JAMMED_S, DETOUR_S = 1.0, 2.0
@@ -133,12 +135,17 @@ def _away_from(near: Near, vx: float, vy: float) -> Point:
 
 
 def sensed(robot: Any, look: float, yaw: float) -> list[Point]:
-    """What the proximity sensor senses within `look` metres, turned into the room frame by
-    odometry's yaw."""
+    """What the robot senses within `look` metres, turned into the room frame by odometry's yaw: the
+    proximity sensor's nearest points (light bodies), else the things its range finder sees
+    (`things`: robots and a lifted table's legs, not walls; humanoids)."""
     if look <= 0.0:
         return []
     nearby = getattr(robot, "nearby", None)
-    if nearby is None:
-        raise ValueError("go_to: `look` needs a body with a proximity sensor (body: light)")
+    if nearby is not None:
+        near = nearby(look)
+    elif hasattr(robot, "scan"):
+        near = things(robot.scan(BEAMS, look + 0.1), look)
+    else:
+        raise ValueError("`look` needs a body with a proximity sensor or a range finder")
     c, s = math.cos(yaw), math.sin(yaw)
-    return [(c * f - s * left, s * f + c * left) for f, left in nearby(look)]
+    return [(c * f - s * left, s * f + c * left) for f, left in near]
