@@ -73,7 +73,8 @@ class LightRobot(Base):
     def __init__(self, cid: int, name: str, chassis: Chassis, motion: MotionProfile,
                  rng: np.random.Generator, told_start: Pose, battery: Battery | None = None) -> None:
         super().__init__(cid, name, chassis, motion, rng, battery, told_start)
-        self._scanner = Scanner(SCAN_HEIGHT, LIGHT_BODY.radius + 0.01, np.random.default_rng(rng.integers(2**32)))
+        noise = np.random.default_rng(rng.integers(2**32))
+        self._scanner = Scanner(SCAN_HEIGHT, LIGHT_BODY.radius + 0.01, noise)
 
     def holding(self) -> bool:
         """A light body has no hands."""
