@@ -8,7 +8,7 @@ from typing import Any
 
 from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.approach.frames import wrap
-from hfsm_behaviours.drive.avoid import Detour, sensed
+from hfsm_behaviours.drive.avoid import Detour, Sensing
 from hfsm_behaviours.drive.goto import body_velocity, heading
 
 FACED = 0.1  # radians: facing the point
@@ -28,6 +28,7 @@ def go_along(ctx: Context, *, points: list[Any], tolerance: float = 0.3, last: f
     pace = min(speed, top) if speed > 0 else top
     goals = [(float(p[0]), float(p[1])) for p in points]
     deadline = ctx.time + timeout
+    sensing = Sensing(robot, look)
     try:
         for k, goal in enumerate(goals):
             near = last if k == len(goals) - 1 else tolerance
@@ -39,7 +40,7 @@ def go_along(ctx: Context, *, points: list[Any], tolerance: float = 0.3, last: f
                 if ctx.time >= deadline:
                     return Outcome("timeout", x=round(here[0], 6), y=round(here[1], 6))
                 velocity = heading(here, goal, pace, [], 0.0)
-                seen = sensed(robot, look, here[2])
+                seen = sensing.seen(ctx.time, here)
                 if seen:
                     left = math.hypot(goal[0] - here[0], goal[1] - here[1])
                     velocity = way_out.steer(ctx.time, velocity, seen, clearance, pace, left)

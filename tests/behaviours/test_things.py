@@ -10,7 +10,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 from scans import cast
 
-from hfsm_behaviours.drive.avoid import sensed
+from hfsm_behaviours.drive.avoid import SCAN_EVERY, Sensing, sensed
 from hfsm_behaviours.drive.things import BEAMS, things
 
 LOOK = 1.2
@@ -59,3 +59,22 @@ def test_sensed_turns_what_a_range_finder_sees_into_the_odometry_frame() -> None
     seen = sensed(Scanning(), LOOK, math.pi / 2)
     assert len(seen) == 1 and seen[0] == pytest.approx((0.0, 0.65), abs=0.02)
     assert sensed(Scanning(), 0.0, 0.0) == []
+
+
+class Counting(Scanning):
+    scans = 0
+
+    def scan(self, beams: int, reach: float) -> list[float]:
+        self.scans += 1
+        return super().scan(beams, reach)
+
+
+def test_a_range_finder_scans_every_quarter_second_and_keeps_what_it_saw_where_it_was() -> None:
+    robot = Counting()
+    sensing = Sensing(robot, LOOK)
+    first = sensing.seen(0.0, (0.0, 0.0, math.pi / 2))
+    moved = sensing.seen(0.2, (0.0, 0.3, math.pi / 2))  # walked 0.3 m towards it: no new scan
+    assert robot.scans == 1
+    assert moved[0] == pytest.approx((first[0][0], first[0][1] - 0.3))
+    sensing.seen(SCAN_EVERY, (0.0, 0.3, math.pi / 2))
+    assert robot.scans == 2
