@@ -8,7 +8,6 @@ import json
 from pathlib import Path
 
 import pytest
-
 from helpers import hfsm_run
 
 DATA = Path(__file__).parent / "data" / "tight"
