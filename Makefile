@@ -26,7 +26,14 @@ $(CHROMIUM): $(STAMP)
 		DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends chromium; }
 	touch $(CHROMIUM)
 
-test: $(STAMP) $(CHROMIUM)
+# The language server's editor test drives Debian's Neovim; installed once, as root.
+NEOVIM := $(VENV)/.neovim
+$(NEOVIM): $(STAMP)
+	command -v nvim >/dev/null || { apt-get update -qq && \
+		DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends neovim; }
+	touch $(NEOVIM)
+
+test: $(STAMP) $(CHROMIUM) $(NEOVIM)
 	$(BIN)/python -m pytest
 
 lint: $(STAMP)
@@ -59,7 +66,7 @@ lock: $(STAMP)
 		--python-platform x86_64-manylinux_2_28 --no-header --annotation-style line -o requirements.lock
 
 LATEST := .venv-latest
-test-latest: $(CHROMIUM)
+test-latest: $(CHROMIUM) $(NEOVIM)
 	rm -rf $(LATEST)
 	$(PYTHON) -m venv $(LATEST)
 	$(LATEST)/bin/python -m pip install --quiet --upgrade pip

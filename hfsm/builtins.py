@@ -1,4 +1,5 @@
-"""The built-in behaviours' signatures (SPEC section 8). Their running code is in runtime/builtins.py."""
+"""The built-in behaviours' signatures (docs/REFERENCE.md#built-in-behaviours). Their running code is in
+runtime/builtins.py."""
 
 from __future__ import annotations
 
@@ -49,7 +50,8 @@ BUILTINS: dict[str, BehaviourSpec] = {
             },
             ("passed",),
             outputs=frozenset({"arrived"}),
-            doc="Wait until the named agents reach the barrier of the same name (SPEC 14).",
+            doc="Wait until the named agents reach the barrier of the same name "
+            "(docs/REFERENCE.md#barriers).",
         ),
     )
 }

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from enum import StrEnum
 
 
@@ -14,7 +14,8 @@ class Severity(StrEnum):
 
 @dataclass(frozen=True, order=True)
 class Finding:
-    """One problem in one file, at a 1-based line and column."""
+    """One problem in one file, at a 1-based line and column; `end`, when known, is the line and
+    column just after the characters at fault (a span inside an expression, for a caret)."""
 
     file: str
     line: int
@@ -22,15 +23,17 @@ class Finding:
     code: str
     message: str
     severity: Severity = field(default=Severity.ERROR, compare=False)
+    end: tuple[int, int] | None = field(default=None, compare=False)
 
     def format(self) -> str:
         """One line, whatever text the message quotes (a line break is shown as `\\n`)."""
-        text = f"{self.file}:{self.line}:{self.col}: {self.severity.value}[{self.code}]: {self.message}"
+        label = f"{self.severity.value}[{self.code}]" if self.code else self.severity.value
+        text = f"{self.file}:{self.line}:{self.col}: {label}: {self.message}"
         lines = text.splitlines()
         return text if len(lines) == 1 else "\\n".join(lines)
 
     def as_error(self) -> Finding:
-        return Finding(self.file, self.line, self.col, self.code, self.message, Severity.ERROR)
+        return replace(self, severity=Severity.ERROR)
 
 
 class HfsmError(Exception):

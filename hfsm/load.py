@@ -6,6 +6,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
+from hfsm import salvage
 from hfsm.checks import enforce, run_checks
 from hfsm.errors import Finding, UserError
 from hfsm.library import Library, MachineFile
@@ -75,15 +76,30 @@ def _load(
     world: str | None,
     world_inputs: Mapping[str, Mapping[str, InputSpec]] | None,
 ) -> Loaded:
+    library, roots, findings = check_files(paths, libs, registry, world, world_inputs)
+    warnings = enforce(findings, strict=strict)
+    return Loaded(library, roots, warnings)
+
+
+def check_files(
+    paths: list[Path],
+    libs: list[Path],
+    registry: Registry | None,
+    world: str | None = None,
+    world_inputs: Mapping[str, Mapping[str, InputSpec]] | None = None,
+    texts: dict[Path, str] | None = None,
+) -> tuple[Library, list[MachineFile], list[Finding]]:
+    """Read the files and all they call and run every check: every finding, errors and warnings.
+    `texts`: files' texts as an editor holds them (by resolved path), read instead of the disk's."""
     registry = registry if registry is not None else Registry()
-    library = Library.for_file(paths[0], libs, registry)
+    library = Library.for_file(paths[0], libs, registry, texts)
     for extra in paths[1:]:
-        if extra.resolve().parent not in library.search:
-            library.search.insert(1, extra.resolve().parent)
+        library.add_user_folder(extra.resolve().parent)
     roots = library.load(paths)
     inputs = None
     if world_inputs is not None:
         inputs = world_inputs.get(world_of(library.machines, registry, world), NO_INPUTS)
-    findings = run_checks(library.machines, registry, inputs)
-    warnings = enforce(library.findings + findings, strict=strict)
-    return Loaded(library, roots, warnings)
+    docs = {m.doc.file: m.doc for m in library.machines.values()}
+    removed = dict(library.removed)
+    findings = salvage.consequences(run_checks(library.machines, registry, inputs), docs, removed)
+    return library, roots, sorted(set(library.findings + findings))

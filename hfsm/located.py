@@ -12,6 +12,7 @@ from pydantic_core import ErrorDetails
 from hfsm.errors import Finding, UserError
 from hfsm.expr import reads
 from hfsm.names import NAME_PATTERN, did_you_mean
+from hfsm.spec import shown
 from hfsm.yamlio import Document, Path_
 
 M = TypeVar("M", bound=BaseModel)
@@ -39,22 +40,77 @@ def findings(model: type[BaseModel], doc: Document, errors: list[ErrorDetails]) 
     """One finding per located value: a union's alternatives fail together but read as one."""
     seen: set[tuple[Path_, bool, object]] = set()
     out: list[Finding] = []
+    misspelt = _misspelt(model, doc, errors)
+    swaps = _swaps(doc, errors)
     for err in errors:
-        path, is_key = _data_path(doc.data, err["loc"])
+        if err["type"] == "missing" and data_path(doc.data, err["loc"])[0] in misspelt | set(swaps):
+            continue  # `els:` for `else:`: the unknown key says it, with the key it meant
+        path, is_key = data_path(doc.data, err["loc"])
         is_key = is_key or err["type"] == "extra_forbidden"
         named = err["loc"][-1] if err["type"] in ("missing", "extra_forbidden") else None
         if (path, is_key, named) in seen:
             continue
         seen.add((path, is_key, named))
-        out.append(doc.finding(path, "E200", _message(model, path, err), key=is_key))
+        message = _message(model, path, err)
+        meant = swaps.get(path[:-1]) if err["type"] == "extra_forbidden" else None
+        if meant is not None and "did you mean" not in message:
+            message = f"unknown key '{path[-1]}'; did you mean '{meant}'?"
+        out.append(doc.finding(path, "E200", message, key=is_key))
     return out
+
+
+def _swaps(doc: Document, errors: list[ErrorDetails]) -> dict[Path_, str]:
+    """The mappings with one unknown key and one missing key: the unknown one stands for it (`dp:`
+    for `do:`), however far apart they are spelt."""
+    unknown: dict[Path_, set[object]] = {}
+    missing: dict[Path_, set[str]] = {}
+    for err in errors:
+        if err["type"] == "extra_forbidden":
+            unknown.setdefault(data_path(doc.data, err["loc"][:-1])[0], set()).add(err["loc"][-1])
+        elif err["type"] == "missing":
+            missing.setdefault(data_path(doc.data, err["loc"])[0], set()).add(str(err["loc"][-1]))
+    return {
+        path: next(iter(keys))
+        for path, keys in missing.items()
+        if len(keys) == 1 and len(unknown.get(path, ())) == 1
+    }
+
+
+def _misspelt(model: type[BaseModel], doc: Document, errors: list[ErrorDetails]) -> set[Path_]:
+    """The mappings holding an unknown key that is close to a key they may have."""
+    found: set[Path_] = set()
+    for err in errors:
+        if err["type"] == "extra_forbidden" and did_you_mean(
+            str(err["loc"][-1]), _keys_near(model, err["loc"])
+        ):
+            found.add(data_path(doc.data, err["loc"][:-1])[0])
+    return found
+
+
+def _keys_near(model: type[BaseModel], loc: tuple[int | str, ...]) -> list[str]:
+    """The keys allowed where `loc` ends, and in a tagged union, those of its other alternatives."""
+    keys = _allowed_keys(model, loc[:-1])
+    if len(loc) >= 2 and _is_tag(loc[-2]):
+        union = _strip(_walk(model, loc[:-2]))
+        for arg in get_args(union):
+            tags = [m for m in getattr(arg, "__metadata__", ()) if isinstance(m, Tag)]
+            if tags:
+                keys += _allowed_keys(model, (*loc[:-2], tags[0].tag))
+    return sorted(set(keys))
+
+
+def _walk(model: type[BaseModel], loc: tuple[int | str, ...]) -> Any:
+    current: Any = model
+    for part in loc:
+        current = _step(current, part)
+    return current
 
 
 def _is_tag(part: int | str) -> bool:
     return isinstance(part, str) and "-" in part
 
 
-def _data_path(data: Any, loc: tuple[int | str, ...]) -> tuple[Path_, bool]:
+def data_path(data: Any, loc: tuple[int | str, ...]) -> tuple[Path_, bool]:
     """Follow pydantic's loc through the data, skipping the union tags that name no data."""
     path: list[str | int] = []
     for part in loc:
@@ -84,8 +140,9 @@ def _message(model: type[BaseModel], path: Path_, err: ErrorDetails) -> str:
     if kind == "extra_forbidden":
         allowed = _allowed_keys(model, err["loc"][:-1])
         if last in _CALL_ONLY and "parallel-state" in err["loc"]:
-            return f"a parallel state has no {where}: its regions call behaviours (SPEC 11)"
-        hint = did_you_mean(str(last), allowed)
+            return (f"a parallel state has no {where}: its regions call behaviours "
+                    "(docs/REFERENCE.md#parallel-states)")
+        hint = did_you_mean(str(last), [k for k in _keys_near(model, err["loc"]) if k != str(last)])
         return f"unknown key {where}" + (hint or f" (allowed: {', '.join(allowed)})")
     if kind == "missing":
         return f"missing required key '{err['loc'][-1]}'"
@@ -191,7 +248,7 @@ def _describe(value: Any) -> str:
         return "a mapping"
     if isinstance(value, list):
         return "a list"
-    return repr(value)
+    return shown(value)
 
 
 def _allowed_keys(model: type[BaseModel], loc: tuple[int | str, ...]) -> list[str]:

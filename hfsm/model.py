@@ -28,7 +28,8 @@ class Param(Strict):
         return "default" not in self.model_fields_set
 
 
-Condition = str | bool | int | float | None  # a bare expression, or a YAML literal (SPEC 7)
+# a bare expression, or a YAML literal (docs/REFERENCE.md#expressions)
+Condition = str | bool | int | float | None
 
 
 def condition_text(value: Condition) -> str:
@@ -48,7 +49,7 @@ Delay = Annotated[float, Field(ge=0, allow_inf_nan=False)] | Expr
 
 
 class Watch(Strict):
-    """A condition tried on entry and every tick (SPEC 12)."""
+    """A condition tried on entry and every tick (docs/REFERENCE.md#watches)."""
 
     if_: Condition = Field(alias="if")
     then: Name
@@ -60,11 +61,18 @@ class Watch(Strict):
 
 
 class Retry(Strict):
-    """Call the behaviour again when it ends with one of these outcomes (SPEC 13)."""
+    """Call the behaviour again when it ends with one of these outcomes (docs/REFERENCE.md#retries)."""
 
     on: list[Name] = Field(min_length=1, description="outcomes of the callee, or `error`")
     times: Count = Field(description="retries after the first call: a positive int or ${params...}")
     delay: Delay = Field(default=0, description="seconds between an end and the next call")
+
+
+class ScopeSpec(Strict):
+    """A team within the team for what the state runs: a private radio with these agents."""
+
+    name: str = Field(description="a name, or an expression giving one; qualified inside an outer scope")
+    agents: list[Any] | str = Field(description="agent ids of the enclosing scope, or an expression of them")
 
 
 class CallState(Strict):
@@ -75,11 +83,15 @@ class CallState(Strict):
     on: dict[Name, Name] = Field(default_factory=dict, description="event -> state or outcome")
     watch: list[Watch] = Field(default_factory=list)
     retry: Retry | None = None
+    scope: ScopeSpec | None = None
+    autonomy: dict[str, str] = Field(
+        default_factory=dict, description="event -> level (off, low, high, full) below which its arc is held"
+    )
     doc: str | None = None
 
 
 class Region(Strict):
-    """One behaviour of a parallel state (SPEC 11)."""
+    """One behaviour of a parallel state (docs/REFERENCE.md#parallel-states)."""
 
     do: Name = Field(description="a built-in, a primitive or another machine")
     with_: dict[str, Any] = Field(default_factory=dict, alias="with")
@@ -117,6 +129,10 @@ class ParallelState(Strict):
     timer: Timer | None = None
     on: dict[Name, Name] = Field(default_factory=dict, description="event -> state or outcome")
     watch: list[Watch] = Field(default_factory=list)
+    scope: ScopeSpec | None = None
+    autonomy: dict[str, str] = Field(
+        default_factory=dict, description="event or join:TARGET -> level below which its arc is held"
+    )
     doc: str | None = None
 
 

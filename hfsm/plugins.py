@@ -10,6 +10,9 @@ from typing import Any
 
 log = logging.getLogger("hfsm.plugins")
 
+RENAMED = {"behaviours": ("behaviours", "hfsm_behaviours"), "sim": ("sim", "hfsm_sim")}
+"""Packages of hfsm that were renamed so that the wheel installs only names of its own."""
+
 
 def describe(ep: EntryPoint) -> str:
     return f"plug-in '{ep.name}' ({ep.value}, entry-point group {ep.group})"
@@ -24,6 +27,16 @@ def load_each(group: str, check: Callable[[EntryPoint, Any], str | None]) -> Ite
     for ep in sorted(entry_points(group=group), key=lambda e: e.name):
         try:
             obj = ep.load()
+        except ImportError as exc:
+            renamed = RENAMED.get((exc.name or "").partition(".")[0])
+            if renamed is None:
+                warn(ep, f"cannot be imported ({type(exc).__name__}: {exc})", "fix or uninstall that package")
+            else:
+                old, new = renamed
+                where = "names" if ep.module.partition(".")[0] == old else "imports"
+                warn(ep, f"{where} the module '{old}', which hfsm renamed '{new}'",
+                     f"write '{new}' for '{old}' in that package (its entry points and imports)")
+            continue
         except Exception as exc:  # a plug-in's import may fail in any way: name it, go on
             warn(ep, f"cannot be imported ({type(exc).__name__}: {exc})", "fix or uninstall that package")
             continue

@@ -71,7 +71,7 @@ class Context(Protocol):
     def time(self) -> float: ...
 
     def wait(self, seconds: float | None = None) -> None:
-        """Block for a span of seconds (per SPEC 5), or one tick when None."""
+        """Block for a span of seconds (per docs/REFERENCE.md#time-and-timers), or one tick when None."""
 
     def wait_until(self, ready: Callable[[], bool], timeout: float = math.inf) -> bool:
         """Block tick by tick until `ready()` is true (True) or the timeout passes (False)."""
@@ -80,6 +80,11 @@ class Context(Protocol):
         """Take the earliest message of that name from the mailbox, if any."""
 
     def send(self, message: str, to: str = "others", **data: Any) -> None: ...
+
+    @property
+    def scope(self) -> str:
+        """The qualified name of the scope the primitive runs under (REFERENCE.md#scopes; '' outside every
+        scope): its messages' names are qualified by it, in `send` and in `receive`."""
 
 
 PrimitiveFn = Callable[..., "str | Outcome"]

@@ -26,7 +26,8 @@ class Registry:
     def __init__(self, primitives: Iterable[Primitive] = ()) -> None:
         self._by_name: dict[str, Primitive] = {}
         self.elsewhere: dict[str, str] = {}  # primitives left out: name -> the world they need
-        self.machine_folders: list[Path] = []  # plug-ins' machines, searched after --lib folders
+        self.machine_folders: list[Path] = []  # plug-ins' machines, searched after the project's
+        self.clashes: dict[str, tuple[str, str]] = {}  # a primitive two plug-ins register: their names
         self.param_checks: dict[str, ParamCheck] = {}
         self.add(*primitives)
 
@@ -59,6 +60,7 @@ class Registry:
         kept = Registry(p for p in self if p.spec.world in (None, world))
         kept.elsewhere = {p.spec.name: str(p.spec.world) for p in self if p.spec.world not in (None, world)}
         kept.machine_folders = list(self.machine_folders)
+        kept.clashes = dict(self.clashes)
         kept.param_checks = dict(self.param_checks)
         return kept
 
@@ -74,6 +76,9 @@ class Registry:
                 continue
             taken = [p.spec.name for p in staging if p.spec.name in registry]
             taken += [f"a check of param '{n}'" for n in staging.param_checks if n in registry.param_checks]
+            for prim in staging:
+                if prim.spec.name in registry:
+                    registry.clashes[prim.spec.name] = (owners[prim.spec.name], ep.name)
             if taken:
                 owner = owners[taken[0]]
                 plugins.warn(

@@ -1,4 +1,4 @@
-"""Traces as values: JSON records written as the run goes (SPEC section 10)."""
+"""Traces as values: JSON records written as the run goes (docs/REFERENCE.md#the-trace)."""
 
 from __future__ import annotations
 
@@ -111,4 +111,17 @@ class JsonlTrace:
 
 def read_jsonl(path: Path) -> list[dict[str, Any]]:
     with path.open(encoding="utf-8") as f:
-        return [json.loads(line) for line in f if line.strip()]
+        return [json_line(line) for line in f if line.strip()]
+
+
+def _no_constant(name: str) -> Any:
+    raise ValueError(f"{name} is not a number JSON allows")
+
+
+def json_line(line: str) -> Any:
+    """One line of a JSON-lines file; ValueError for anything that is not plain JSON (NaN, a number
+    of more digits than Python converts, nesting deeper than the interpreter's recursion)."""
+    try:
+        return json.loads(line, parse_constant=_no_constant)
+    except RecursionError:
+        raise ValueError("nested too deep") from None

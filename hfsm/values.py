@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-from hfsm.expr import ExprSyntaxError, Fn, Names, Scope, bounded, compile_expr, to_text
+from hfsm import bounds
+from hfsm.expr import ExprSyntaxError, Fn, Names, Scope, bounded, compile_expr, short, to_text
 
 
 @dataclass(frozen=True)
@@ -19,37 +21,54 @@ class Value:
     is_expr: bool = False  # exactly "${…}": its type is known only when it runs
 
 
-def split(text: str) -> list[str | tuple[str]]:
-    """Split text into literal parts and (expression,) parts; '${' without its '}' is an error."""
-    parts: list[str | tuple[str]] = []
-    i = 0
+MAX_TEMPLATE = bounds.MAX_TEXT  # characters of a string holding `${…}`: its text could not be built
+MAX_PARTS = 1_000  # `${…}` in one string
+
+
+def split(text: str) -> list[str | tuple[str, int]]:
+    """Split text into literal parts and (expression, its offset in text) parts; '${' without its
+    '}' is an error, at the '${'; so is a string past MAX_TEMPLATE characters or MAX_PARTS `${…}`."""
+    if len(text) > MAX_TEMPLATE:
+        message = f"a string with '${{…}}' of {len(text):,} characters: the limit is {MAX_TEMPLATE:,}"
+        raise ExprSyntaxError(message, 0, 0)
+    parts: list[str | tuple[str, int]] = []
+    i = count = 0
     while (start := text.find("${", i)) >= 0:
+        count += 1
+        if count > MAX_PARTS:
+            message = f"more than {MAX_PARTS:,} '${{…}}' in one string (the limit)"
+            raise ExprSyntaxError(message, start, start + 2)
         end = _closing(text, start + 2)
+        if end < 0:
+            raise ExprSyntaxError(f"'${{' without its closing '}}' in '{short(text)}'", start, start + 2)
         if start > i:
             parts.append(text[i:start])
-        parts.append((text[start + 2 : end],))
+        parts.append((text[start + 2 : end], start + 2))
         i = end + 1
     if i < len(text):
         parts.append(text[i:])
     return parts
 
 
+_SPECIAL = re.compile(r"""['"{}]""")
+
+
 def _closing(text: str, i: int) -> int:
+    """The index of the '}' that closes a `${` whose expression starts at text[i], or -1."""
     depth, quote = 0, ""
-    while i < len(text):
-        ch = text[i]
+    for found in _SPECIAL.finditer(text, i):
+        ch, at = found.group(), found.start()
         if quote:
-            quote = "" if ch == quote and text[i - 1] != "\\" else quote
+            quote = "" if ch == quote and text[at - 1] != "\\" else quote
         elif ch in "'\"":
             quote = ch
         elif ch == "{":
             depth += 1
-        elif ch == "}":
-            if depth == 0:
-                return i
+        elif depth == 0:
+            return at
+        else:
             depth -= 1
-        i += 1
-    raise ExprSyntaxError(f"'${{' without its closing '}}' in '{text}'")
+    return -1
 
 
 def compile_text(text: str, names: Names) -> Value:

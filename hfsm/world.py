@@ -15,12 +15,13 @@ from typing import Any, Protocol
 from hfsm.primitive import Message
 
 WORLDS_GROUP = "hfsm.worlds"
-NOTICE = "barrier notice"  # the kind of the engine's own barrier notices: never a message name (SPEC 14)
+# the kind of the engine's own barrier notices: never a message name (docs/REFERENCE.md#barriers)
+NOTICE = "barrier notice"
 
 
 @dataclass(frozen=True)
 class InputSpec:
-    """An input a world declares (SPEC 12): machines read it as `in.NAME`."""
+    """An input a world declares (docs/REFERENCE.md#watches): machines read it as `in.NAME`."""
 
     name: str
     type: str  # int, float, bool, str, list or dict, as a param's type
@@ -62,7 +63,8 @@ class World(Protocol):
         """Move the world from tick `tick` to tick `tick + 1`."""
 
     def failures(self, tick: int) -> Sequence[tuple[str, str]]:
-        """The agents this world fails at the start of `tick`, each with the reason (SPEC 15).
+        """The agents this world fails at the start of `tick`, each with the reason
+        (docs/REFERENCE.md#agents-that-fail).
 
         A static world is never asked: one that fails agents on its own must not be static.
         """

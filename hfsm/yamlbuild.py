@@ -269,8 +269,18 @@ class EventBuilder:
         if event.tag == CORE + "merge" or (event.value == "<<" and not event.style):
             self.error(pos, "E103", "merge keys ('<<') are not allowed")
             return _BAD_KEY
+        if not isinstance(key, str):
+            self.error(pos, "E100", f"a key must be a string, not {_kind(key)} {event.value}; "
+                       f"write '{event.value}' in quotes if text was meant")
+            return _BAD_KEY
         if key in parent.value:
             self.error(pos, "E101", f"duplicate key '{key}'")
             return _BAD_KEY
         self.built.keys[(*parent.path, key)] = pos
         return key
+
+
+def _kind(value: Any) -> str:
+    if value is None:
+        return "null"
+    return {bool: "the boolean", int: "the integer", float: "the number"}.get(type(value), "the value")

@@ -4,6 +4,7 @@ an unquoted `: ` or `#`, a quote never closed."""
 from __future__ import annotations
 
 import re
+from typing import Any
 
 _KEY = re.compile(r"^(\s*)(?:-\s+)*[^\s#'\"][^:#]*:(\s|$)")
 
@@ -65,3 +66,52 @@ def _indentation(lines: list[str], line: int) -> str:
     shown = ", ".join(str(c) for c in columns[-4:])
     where = f" (the keys above start at column {shown})" if columns else ""
     return f"the indentation does not line up: this line starts at column {_indent(here) + 1}{where}"
+
+
+_CLOSE = {"{": "}", "[": "]"}
+
+
+def unclosed(exc: Any, lines: list[str]) -> tuple[int, int, str, str] | None:
+    """A `{`, a `[` or a quote never closed: (line, col, code, message) at it, or None.
+
+    libyaml notices only where the flow collection should have ended (often the next line); its
+    context mark is the bracket that was opened, and the bracket's line does not close it."""
+    context = str(exc.context or "")
+    start, end = exc.context_mark, exc.problem_mark
+    if start is None or end is None:
+        return None
+    if "while scanning a quoted scalar" in context and "end of stream" in str(exc.problem):
+        quote = (lines[start.line] if start.line < len(lines) else "")[start.column : start.column + 1] or "'"
+        message = f"YAML syntax: this {quote!r} is never closed: add {quote!r} where the text ends"
+        return start.line + 1, start.column + 1, "E100", message
+    if "while parsing a flow" not in context:
+        return None
+    text = lines[start.line] if start.line < len(lines) else ""
+    bracket = text[start.column : start.column + 1]
+    if bracket not in _CLOSE or (end.line == start.line and _closes(text, start.column)):
+        return None
+    if end.line == start.line and ": " in text[start.column :]:
+        return None  # a `: ` inside the brackets, not a missing bracket: the usual hint says so
+    message = (
+        f"YAML syntax: this '{bracket}' is never closed: add '{_CLOSE[bracket]}' where its "
+        f"{'mapping' if bracket == '{' else 'list'} ends (at the end of line {start.line + 1}?)"
+    )
+    return start.line + 1, start.column + 1, "E100", message
+
+
+def _closes(text: str, at: int) -> bool:
+    depth, quote = 0, ""
+    for char in text[at:]:
+        if quote:
+            quote = "" if char == quote else quote
+        elif char in "'\"":
+            quote = char
+        elif char in "[{":
+            depth += 1
+        elif char in "]}":
+            depth -= 1
+            if depth == 0:
+                return True
+        elif char == "#":
+            break
+    return False

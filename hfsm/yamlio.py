@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import gc
 import os
+import re
 import stat
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -22,7 +23,7 @@ from yaml import events as ev
 
 from hfsm.errors import Finding, UserError
 from hfsm.yamlbuild import MAX_DEPTH, MAX_EXPANDED, MAX_NODES, EventBuilder, Path_, Pos, TooBig
-from hfsm.yamlhints import hint
+from hfsm.yamlhints import hint, unclosed
 
 __all__ = ["MAX_BYTES", "MAX_DEPTH", "MAX_EXPANDED", "MAX_NODES", "Document", "Path_", "Pos"]
 
@@ -57,6 +58,7 @@ class Document:
     data: Any
     keys: dict[Path_, Pos] = field(default_factory=dict)
     values: dict[Path_, Pos] = field(default_factory=dict)
+    text: str = field(default="", repr=False)  # as read: to place a finding inside a string
 
     def pos(self, path: Path_, *, key: bool = False) -> Pos:
         """Position of the value (or key) at `path`, else of its nearest located ancestor."""
@@ -96,20 +98,31 @@ def decode(raw: bytes, file: str) -> str:
         ) from None
 
 
-def parse_text(text: str, file: str) -> Document:
-    """Parse and build one YAML document; raise UserError with every problem found."""
+def parse_text(text: str, file: str, *, kept: list[Finding] | None = None) -> Document:
+    """Parse and build one YAML document; raise UserError with every problem found.
+
+    With `kept`, the problems that leave a document to read (a duplicate key, a tag, a bad number)
+    are added to it instead, and the document is returned as it was built around them."""
     doc = Document(file, None)
     builder = EventBuilder(file)
-    parser = _Parser(text)
+    cut = _flow_cut(text)
+    parser = _Parser(text[:cut])
     try:
         with collector_paused():
             _drive(parser, builder, file)
+        if cut < len(text):
+            raise TooBig(_line_col(text, cut - 1), f"collections nested more than {MAX_DEPTH} deep")
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         deep = _too_deep(text, builder.block_depth(), mark.index if mark else len(text))
+        if deep is None and cut < len(text):
+            deep = _line_col(text, cut - 1)
         if deep is not None:
             message = f"collections nested more than {MAX_DEPTH} deep"
             raise UserError([Finding(file, *deep, "E106", message)]) from None
+        opened = unclosed(exc, text.splitlines())
+        if opened is not None:
+            raise UserError([Finding(file, *opened)]) from None
         line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
         message = " ".join(str(p) for p in (exc.context, exc.problem) if p)
         extra = hint(message, text.splitlines(), line, col)
@@ -130,36 +143,50 @@ def parse_text(text: str, file: str) -> Document:
     built = builder.built
     if builder.empty:
         raise UserError([Finding(file, 1, 1, "E105", "the file is empty")])
-    if built.errors:
+    if built.errors and kept is None:
         raise UserError(built.errors)
-    doc.data, doc.keys, doc.values = built.data, built.keys, built.values
+    if kept is not None:
+        kept.extend(built.errors)
+    doc.data, doc.keys, doc.values, doc.text = built.data, built.keys, built.values, text
     return doc
+
+
+_FLOW = re.compile(
+    r"(?<![^\s\[{,:])'[^']*+(?:''[^']*+)*+'"  # a single-quoted string (loops unrolled: a long one
+    r'|(?<![^\s\[{,:])"[^"\\]*+(?:\\.[^"\\]*+)*+"'  # costs no backtracking), a double-quoted one
+    r"|(?<!\S)#[^\n]*|[\[\]{}]"  # a comment, or a bracket
+)
 
 
 def _too_deep(text: str, blocks: int, end: int) -> Pos | None:
     """Where brackets nest past MAX_DEPTH (with `blocks` indented collections around them) before
     `end`: the parser's own nesting limit may be met first, but ours is the one reported."""
-    depth, quote, i = 0, "", 0
-    while i < min(end + 1, len(text)):
-        char = text[i]
-        if quote:
-            if char == "\\" and quote == '"':
-                i += 1
-            elif char == quote:
-                quote = ""
-        elif char in "[{":
+    index = _deep_bracket(text, MAX_DEPTH - blocks, end)
+    return None if index is None else _line_col(text, index)
+
+
+def _deep_bracket(text: str, limit: int, end: int) -> int | None:
+    """The index of the first bracket that opens more than `limit` levels of brackets, before `end`
+    (quoted strings and comments skipped)."""
+    depth = 0
+    for match in _FLOW.finditer(text, 0, min(end + 1, len(text))):
+        char = match.group()
+        if char in "[{":
             depth += 1
-            if blocks + depth > MAX_DEPTH:
-                return _line_col(text, i)
+            if depth > limit:
+                return match.start()
         elif char in "]}":
             depth = max(0, depth - 1)
-        elif char in "'\"" and (i == 0 or text[i - 1] in " \t\n[{,:"):
-            quote = char
-        elif char == "#" and (i == 0 or text[i - 1] in " \t\n"):
-            newline = text.find("\n", i)
-            i = len(text) if newline < 0 else newline
-        i += 1
     return None
+
+
+def _flow_cut(text: str) -> int:
+    """How much of `text` the parser is given: all of it, unless brackets alone nest past MAX_DEPTH;
+    then up to that bracket, so that our limit meets it before any limit of the parser's own."""
+    if text.count("[") + text.count("{") <= MAX_DEPTH:
+        return len(text)
+    index = _deep_bracket(text, MAX_DEPTH, len(text))
+    return len(text) if index is None else index + 1
 
 
 def _line_col(text: str, index: int) -> Pos:
@@ -216,9 +243,13 @@ def _too_big(file: str, size: int) -> Finding:
     return Finding(file, 1, 1, "E106", message)
 
 
-def read_mapping(path: Path, what: str) -> Document:
-    """Read a file whose top level must be a mapping."""
-    doc = read_file(path)
+def read_mapping(
+    path: Path, what: str, *, text: str | None = None, kept: list[Finding] | None = None
+) -> Document:
+    """Read a file whose top level must be a mapping (`text`: its text, when it is not the disk's)."""
+    file = str(path)
+    text = text if text is not None else decode(read_bytes(path, file), file)
+    doc = parse_text(text, file, kept=kept)
     if not isinstance(doc.data, dict):
         kind = type(doc.data).__name__ if doc.data is not None else "null"
         raise UserError([doc.finding((), "E105", f"expected {what} (a mapping), got {kind}")])

@@ -1,4 +1,4 @@
-"""The inputs the sim world declares (SPEC 12): what machines read as `in.NAME`.
+"""The inputs the sim world declares (docs/REFERENCE.md#watches): what machines read as `in.NAME`.
 
 Declarations only, so that `hfsm-run --check` knows them without starting the simulator; the
 values come from `hfsm_behaviours.senses`, from what a robot senses (`radio_delay` from what its radio

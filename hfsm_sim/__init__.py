@@ -51,11 +51,15 @@ The motion, camera and body profile, the lifting rules and the scorer are descri
 hfsm_sim/README.md (numbers in hfsm_sim/profile.py).
 """
 
-from hfsm_sim.camera import CameraModel
-from hfsm_sim.light import LightRobot
-from hfsm_sim.radio import Radio
-from hfsm_sim.robot import ArmState, HandLoad, Robot
-from hfsm_sim.scenario import (
+from hfsm_sim.quiet_import import import_pybullet_quietly
+
+import_pybullet_quietly()  # before any module of this package imports it
+
+from hfsm_sim.camera import CameraModel  # noqa: E402
+from hfsm_sim.light import LightRobot  # noqa: E402
+from hfsm_sim.radio import Radio  # noqa: E402
+from hfsm_sim.robot import ArmState, HandLoad, Robot  # noqa: E402
+from hfsm_sim.scenario import (  # noqa: E402
     DEFAULT_SCENARIO,
     Scenario,
     load_scenario,
@@ -63,7 +67,7 @@ from hfsm_sim.scenario import (
     scenario_from_dict,
     scenario_names,
 )
-from hfsm_sim.world import World
+from hfsm_sim.world import World  # noqa: E402
 
 __all__ = [
     "DEFAULT_SCENARIO",

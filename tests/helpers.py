@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import importlib.util
+import re
 import sys
 import textwrap
 from collections.abc import Sequence
@@ -22,6 +23,12 @@ from hfsm.trace import ListTrace, TraceSink
 from hfsm.world import NullWorld, World
 
 ROOT = Path(__file__).resolve().parent.parent
+SNIPPET = re.compile(r"^ *\d* \|( .*)?$")  # the source line and caret printed under a finding
+
+
+def finding_lines(err: str) -> list[str]:
+    """The lines of stderr less the source lines and carets printed under each finding."""
+    return [line for line in err.splitlines() if not SNIPPET.match(line)]
 
 
 def hfsm_run(capsys: pytest.CaptureFixture[str], *argv: object) -> tuple[int, str, str]:

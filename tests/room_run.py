@@ -1,7 +1,8 @@
 """Test-side runner for rooms of several tables (issue 10): each robot is told, as the `table`
 param of move_furniture, where the table its task names stands in its own start frame (from the
 start pose the scenario gives it, not the jittered truth), and the end is judged from the truth.
-With `pairs`, each robot is also told its partner, the pair's channel and its role."""
+With `pairs`, each robot is also told its role and runs under its pair's scope (its partner, and
+a name of the pair's own)."""
 
 from __future__ import annotations
 
@@ -53,13 +54,13 @@ def to_room(scenario: Scenario, robot: str, point: list[float]) -> list[float]:
 
 
 def pairs_told(pairs: dict[str, tuple[str, str]], channel: str = "") -> dict[str, dict[str, Any]]:
-    """For each table, (leader, assistant): each robot's partner, the pair's channel (the table's
-    name and `channel`) and its role, as a team would give them."""
+    """For each table, (leader, assistant): each robot's role, and the pair's scope (`scope`: its name,
+    the table's and `channel`, and the pair), as a team would give them."""
     told: dict[str, dict[str, Any]] = {}
     for table, (leader, assistant) in pairs.items():
-        name = f"{table}{channel}_"
-        told[leader] = {"partner": assistant, "channel": name, "role": "leader"}
-        told[assistant] = {"partner": leader, "channel": name, "role": "assistant"}
+        scope = (f"pair_{table}{channel}", (leader, assistant))
+        told[leader] = {"role": "leader", "scope": scope}
+        told[assistant] = {"role": "assistant", "scope": scope}
     return told
 
 
@@ -75,14 +76,16 @@ def run_room(scenario_name: str, seed: int, tasks: dict[str, str], max_time: flo
     if failures:
         scenario = scenario.model_copy(update={"failures": [FailureAt(robot=r, at=t) for r, t in failures.items()]})
     told = told or {}
+    scopes = {robot: given["scope"] for robot, given in told.items() if "scope" in given}
+    params = {robot: {k: v for k, v in given.items() if k != "scope"} for robot, given in told.items()}
     agent_params = {robot: machine_params(root, {"table": in_start_frame(scenario, robot, table),
-                                                 **told.get(robot, {})})
+                                                 **params.get(robot, {})})
                     for robot, table in tasks.items()}
     world = World(scenario, seed, radio_loss=radio_loss)
     try:
         starts = [world.truth.table_pose(i)[:2] for i in range(len(world.truth.tables))]
         options = RunOptions(root.name, list(world.robots), machine_params(root, {}), seed, max_time,
-                             agent_params=agent_params)
+                             agent_params=agent_params, scopes=scopes)
         result = run(Program(loaded.machines, reg, 0.05), SimWorld(world), options, trace)
         ends = [world.truth.table_pose(i)[:2] for i in range(len(world.truth.tables))]
         score = world.score()
@@ -108,7 +111,7 @@ PAIRS = {  # scenario -> table -> (leader, assistant), as a team would form them
 
 def run_pairs(scenario: str, seed: int, *, radio_loss: float = 0.0, failures: dict[str, float] | None = None,
               max_time: float = 2400.0) -> RoomRun:
-    """Every pair of PAIRS[scenario] told its table, partner, channel and roles."""
+    """Every pair of PAIRS[scenario] told its table and roles, each under its pair's scope."""
     pairs = PAIRS[scenario]
     tasks = {robot: table for table, pair in pairs.items() for robot in pair}
     return run_room(scenario, seed, tasks, max_time, told=pairs_told(pairs), radio_loss=radio_loss,

@@ -1,4 +1,5 @@
-"""Time the join-coverage check (SPEC 11): parallel states of 6 regions with 5 outcomes each.
+"""Time the join-coverage check (docs/REFERENCE.md#parallel-states): parallel states of 6 regions with 5
+outcomes each.
 
 For each case: `hfsm-run --check` of the whole file in process (load, every check), the coverage
 search alone, and a naive search over every combination for comparison. Rewrites the bench_checks

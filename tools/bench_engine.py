@@ -4,7 +4,7 @@ Usage: .venv/bin/python tools/bench_engine.py [--rounds 3] [--quick] [--libs hfs
                                                [--no-doc] [--json FILE]
 (`make bench` installs the peers from tools/bench-requirements.txt first.)
 
-Workloads (see tools/bench/ and /work/shared/research/peer_bench.md): W1 flat two-state toggle,
+Workloads (see tools/bench/ and docs/PERFORMANCE.md): W1 flat two-state toggle,
 W2 three nested levels (3 exits and 3 entries a transition), W3 a 500-state chain (load from YAML,
 and run), W4 a parallel state of four one-tick regions joined and re-entered (hfsm, transitions,
 sismic). Each library runs in a fresh process per round (`--worker LIB`), rounds rotate the order;

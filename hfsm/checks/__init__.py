@@ -1,4 +1,4 @@
-"""The checks run before anything runs (SPEC section 9): each small, named, with stable codes.
+"""The checks run before anything runs (docs/CHECKS.md): each small, named, with stable codes.
 
 Errors E1xx are the reader's, E2xx schema and names, E3xx meaning; warnings W4xx become errors
 with `--strict`. docs/CHECKS.md lists every code.
@@ -8,12 +8,14 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 
+from hfsm.checks.autonomy import check_autonomy
 from hfsm.checks.calls import check_calls
 from hfsm.checks.context import CheckContext
 from hfsm.checks.expressions import check_expressions, check_param_defaults
 from hfsm.checks.forgotten import check_forgotten_wraps
 from hfsm.checks.graphs import check_recursion, check_state_graph
 from hfsm.checks.parallel import check_parallel
+from hfsm.checks.scopes import check_scopes
 from hfsm.checks.structure import (
     check_any,
     check_choice_else,
@@ -44,6 +46,8 @@ MACHINE_CHECKS: tuple[MachineCheck, ...] = (
     check_state_graph,
     check_regions,
     check_forgotten_wraps,
+    check_autonomy,
+    check_scopes,
 )
 
 

@@ -1,4 +1,5 @@
-"""Checks of each call state against the signature of what it calls (SPEC sections 3, 4, 8)."""
+"""Checks of each call state against the signature of what it calls (docs/REFERENCE.md#states,
+docs/REFERENCE.md#events-and-arcs, docs/REFERENCE.md#built-in-behaviours)."""
 
 from __future__ import annotations
 
@@ -8,7 +9,7 @@ from hfsm.expr import ExprSyntaxError
 from hfsm.library import MachineFile
 from hfsm.model import CallState, Region
 from hfsm.names import RESERVED_MESSAGES, did_you_mean, is_name
-from hfsm.spec import BehaviourSpec, type_ok
+from hfsm.spec import BehaviourSpec, shown, type_ok
 from hfsm.values import split
 
 Where = tuple[str | int, ...]
@@ -64,9 +65,8 @@ def _check_params(
                 mf, (*where, "with", key), "E302", f"unknown param '{key}' of '{spec.name}'{hint}", key=True
             )
         elif not _is_expr(value) and not type_ok(value, param.type):
-            message = (
-                f"param '{key}' of '{spec.name}' takes {param.type}, not {type(value).__name__} {value!r}"
-            )
+            kind = type(value).__name__
+            message = f"param '{key}' of '{spec.name}' takes {param.type}, not {kind} {shown(value)}"
             if isinstance(value, str) and reads_like_expression(value):
                 message += f"; write '{wrapped(value)}' for an expression"
             ctx.error(mf, (*where, "with", key), "E306", message)

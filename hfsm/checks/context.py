@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 from hfsm import digraph
@@ -13,6 +13,7 @@ from hfsm.graph import call_graph
 from hfsm.library import MachineFile
 from hfsm.model import CallState, ChoiceState, Machine, ParallelState
 from hfsm.registry import Registry
+from hfsm.scalarpos import inside_string
 from hfsm.spec import BehaviourSpec, ParamSpec
 from hfsm.world import InputSpec
 from hfsm.yamlio import Path_
@@ -54,12 +55,25 @@ class CheckContext:
         """Who calls whom, among the loaded machines and what they call."""
         return call_graph({name: m.model for name, m in self.machines.items()})
 
-    def error(self, machine: MachineFile, path: Path_, code: str, message: str, *, key: bool = False) -> None:
-        self.findings.append(machine.doc.finding(path, code, message, key=key))
+    def error(
+        self,
+        machine: MachineFile,
+        path: Path_,
+        code: str,
+        message: str,
+        *,
+        key: bool = False,
+        span: tuple[int, int] | None = None,
+    ) -> None:
+        """A finding at the key or value at `path`; `span`: the offsets of the characters at fault
+        inside the string value there (the finding stays at the string's start if they cannot be
+        placed exactly)."""
+        found = machine.doc.finding(path, code, message, key=key)
+        self.findings.append(inside_string(machine.doc, path, found, span) if span and not key else found)
 
     def warn(self, machine: MachineFile, path: Path_, code: str, message: str, *, key: bool = False) -> None:
         f = machine.doc.finding(path, code, message, key=key)
-        self.findings.append(Finding(f.file, f.line, f.col, f.code, f.message, Severity.WARNING))
+        self.findings.append(replace(f, severity=Severity.WARNING))
 
 
 def call_states(m: Machine) -> Iterator[tuple[str, CallState]]:

@@ -1,4 +1,5 @@
-"""Whether a parallel state's join rules cover every combination of its regions' outcomes (SPEC 11).
+"""Whether a parallel state's join rules cover every combination of its regions' outcomes
+(docs/REFERENCE.md#parallel-states).
 
 Each rule is a box in the product of the regions' outcome sets; the join cannot hang when the boxes
 cover the product. That is a tautology check, exponential at worst, so the search goes region by

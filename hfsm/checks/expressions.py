@@ -1,4 +1,5 @@
-"""Every expression of a machine compiles, and reads only names that exist where it stands (SPEC 7, 12)."""
+"""Every expression of a machine compiles, and reads only names that exist where it stands
+(docs/REFERENCE.md#expressions, docs/REFERENCE.md#watches)."""
 
 from __future__ import annotations
 
@@ -7,11 +8,11 @@ from dataclasses import dataclass
 from typing import Any
 
 from hfsm.checks.context import CheckContext, call_states, choice_states, parallel_states
-from hfsm.expr import ExprSyntaxError, Names, compile_expr, reads
+from hfsm.expr import ExprSyntaxError, Names, compile_expr, reads_at
 from hfsm.library import MachineFile
 from hfsm.model import IfBranch, Watch
 from hfsm.names import did_you_mean
-from hfsm.spec import type_ok
+from hfsm.spec import shown, type_ok
 from hfsm.values import split
 
 Where = tuple[str | int, ...]
@@ -35,31 +36,38 @@ RETRY = Place("a retry's 'times' or 'delay'", vars=False, state=False, machine_t
 STATE_NAMES = "only in a state's with, timer and watch, the machine's watch, and a choice's if"
 
 
-def check_expression(ctx: CheckContext, mf: MachineFile, where: Where, source: str, place: Place) -> None:
-    """One bare expression: its syntax and names (E314), then what it reads live (E330, E331)."""
+def check_expression(
+    ctx: CheckContext, mf: MachineFile, where: Where, source: str, place: Place, offset: int = 0
+) -> None:
+    """One bare expression, standing at `offset` in the string at `where`: its syntax and names
+    (E314, at the characters at fault), then what it reads live (E330, E331)."""
     m = mf.model
     try:
         compile_expr(source, Names(m.params, m.vars if place.vars else None))
     except ExprSyntaxError as exc:
-        ctx.error(mf, where, "E314", str(exc))
+        ctx.error(mf, where, "E314", str(exc), span=_span(exc, offset))
         return
     if "state" not in source and "machine" not in source and "in" not in source:
         return  # reads nothing live: no need to parse it again
-    for name in sorted(reads(source)):
+    reported = set()
+    for name, start, end in reads_at(source):
+        if name in reported:
+            continue
+        reported.add(name)
         root, attr = name.split(".", 1)
+        span = (offset + start, offset + end)
         if root == "state" and not place.state:
-            ctx.error(mf, where, "E331", f"'{name}' cannot be read in {place.what}; {STATE_NAMES}")
+            ctx.error(mf, where, "E331", f"'{name}' cannot be read in {place.what}; {STATE_NAMES}", span=span)
         elif name == "machine.time" and not place.machine_time:
-            ctx.error(mf, where, "E331", f"'machine.time' cannot be read in {place.what}")
+            ctx.error(mf, where, "E331", f"'machine.time' cannot be read in {place.what}", span=span)
         elif root == "in" and not place.inputs:
-            ctx.error(
-                mf, where, "E331", f"'in.{attr}' cannot be read in {place.what}; only params and agent.id"
-            )
+            message = f"'in.{attr}' cannot be read in {place.what}; only params and agent.id"
+            ctx.error(mf, where, "E331", message, span=span)
         elif root == "in" and ctx.inputs is not None and attr not in ctx.inputs:
             declared = ", ".join(sorted(ctx.inputs)) or "none"
             hint = did_you_mean(attr, ctx.inputs)
             message = f"the run's world declares no input 'in.{attr}' (it declares: {declared}){hint}"
-            ctx.error(mf, where, "E330", message)
+            ctx.error(mf, where, "E330", message, span=span)
 
 
 def strings_in(where: Where, value: Any) -> Iterator[tuple[Where, str]]:
@@ -74,23 +82,25 @@ def strings_in(where: Where, value: Any) -> Iterator[tuple[Where, str]]:
             yield from strings_in((*where, i), item)
 
 
-def expressions_in(where: Where, value: Any) -> Iterator[tuple[Where, str]]:
-    """The `${…}` expressions of a literal tree with where each stands, at any depth, never in keys."""
-    for at, text in strings_in(where, value):
-        if "${" in text:
-            for part in split(text):
-                if isinstance(part, tuple):
-                    yield at, part[0]
+def _span(exc: ExprSyntaxError, offset: int) -> tuple[int, int] | None:
+    if exc.start is None:
+        return None
+    return offset + exc.start, offset + (exc.end if exc.end is not None else exc.start)
 
 
 def check_value(ctx: CheckContext, mf: MachineFile, where: Where, value: Any, place: Place) -> None:
-    try:
-        found = list(expressions_in(where, value))
-    except ExprSyntaxError as exc:
-        ctx.error(mf, where, "E314", str(exc))
-        return
-    for at, source in found:
-        check_expression(ctx, mf, at, source, place)
+    """Every `${…}` of a literal tree, at any depth, never in keys; an unclosed one at its `${`."""
+    for at, text in strings_in(where, value):
+        if "${" not in text:
+            continue
+        try:
+            parts = split(text)
+        except ExprSyntaxError as exc:
+            ctx.error(mf, at, "E314", str(exc), span=_span(exc, 0))
+            continue
+        for part in parts:
+            if isinstance(part, tuple):
+                check_expression(ctx, mf, at, part[0], place, part[1])
 
 
 def _watches(ctx: CheckContext, mf: MachineFile, where: Where, watches: list[Watch]) -> None:
@@ -127,5 +137,5 @@ def check_expressions(ctx: CheckContext, mf: MachineFile) -> None:
 def check_param_defaults(ctx: CheckContext, mf: MachineFile) -> None:
     for name, param in mf.model.params.items():
         if not param.required and not type_ok(param.default, param.type):
-            message = f"default {param.default!r} of param '{name}' is not a {param.type}"
+            message = f"default {shown(param.default)} of param '{name}' is not a {param.type}"
             ctx.error(mf, ("params", name, "default"), "E306", message)

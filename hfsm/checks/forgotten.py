@@ -33,7 +33,8 @@ _ANY_NAMES = Names(_Every(), _Every())
 
 
 def reads_like_expression(text: str) -> bool:
-    """`vars.lap + 1`, `params.target`: parses as an expression and reads a name of SPEC 7."""
+    """`vars.lap + 1`, `params.target`: parses as an expression and reads a name of
+    docs/REFERENCE.md#expressions."""
     if "${" in text or "." not in text or not any(root in text for root in _ROOTS):
         return False  # most strings: no need to parse them
     try:

@@ -91,7 +91,8 @@ def _reached(ctx: CheckContext, mf: MachineFile) -> set[object]:
 
 
 def endless_loops(ctx: CheckContext, mf: MachineFile) -> list[list[str]]:
-    """Loops of reached states that no timer or watch can leave (SPEC 12: those end), in file order."""
+    """Loops of reached states that no timer or watch can leave (docs/REFERENCE.md#watches: those end), in
+    file order."""
     key = ("loops", mf.name)
     if key not in ctx.memo:
         m = mf.model

@@ -1,4 +1,5 @@
-"""Checks of parallel states (SPEC 11): regions, join rules, a join that cannot hang, and `on:`."""
+"""Checks of parallel states (docs/REFERENCE.md#parallel-states): regions, join rules, a join that cannot
+hang, and `on:`."""
 
 from __future__ import annotations
 

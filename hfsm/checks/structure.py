@@ -5,7 +5,7 @@ from __future__ import annotations
 from hfsm.checks.context import CheckContext, choice_states
 from hfsm.library import MachineFile
 from hfsm.model import ChoiceState, ElseBranch, IfBranch, JoinRule, ParallelState
-from hfsm.names import RESERVED_MESSAGES, RESERVED_OUTCOMES, did_you_mean
+from hfsm.names import RESERVED_MESSAGES, RESERVED_OUTCOMES, did_you_mean, did_you_mean_kinds
 
 
 def check_reserved_names(ctx: CheckContext, mf: MachineFile) -> None:
@@ -43,7 +43,7 @@ def check_failures(ctx: CheckContext, mf: MachineFile) -> None:
 def _check_target(ctx: CheckContext, mf: MachineFile, path: tuple[str | int, ...], target: str) -> None:
     m = mf.model
     if target not in m.states and target not in m.all_outcomes:
-        hint = did_you_mean(target, [*m.states, *m.all_outcomes])
+        hint = did_you_mean_kinds(target, {"state": m.states, "outcome": m.all_outcomes})
         ctx.error(mf, path, "E301", f"unknown target '{target}': not a state or outcome{hint}")
 
 

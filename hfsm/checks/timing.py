@@ -1,4 +1,5 @@
-"""What bounds time in a machine: timers, and watches that read the time (SPEC 5, 12)."""
+"""What bounds time in a machine: timers, and watches that read the time (docs/REFERENCE.md#time-and-timers,
+docs/REFERENCE.md#watches)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,5 @@
-"""`--fail AGENT@SECONDS`: fail an agent in any world (SPEC 15), checked before anything runs."""
+"""`--fail AGENT@SECONDS`: fail an agent in any world (docs/REFERENCE.md#agents-that-fail), checked before
+anything runs."""
 
 from __future__ import annotations
 

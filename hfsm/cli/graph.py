@@ -7,13 +7,13 @@ each through a temporary file renamed into place, so bad input leaves the output
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import sys
 from collections.abc import Sequence
 from pathlib import Path
 
 from hfsm.cli import report
+from hfsm.cli.named import machine_path
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.diagram.dot import to_dot
 from hfsm.diagram.extract import Sources, machine_figure, overview
@@ -48,7 +48,8 @@ def build_parser() -> argparse.ArgumentParser:
         prog="hfsm-graph",
         description="Draw machine files: a figure per machine, the call graph, the legend.",
     )
-    p.add_argument("paths", nargs="+", type=Path, metavar="PATH", help="a machine file or a folder of them")
+    p.add_argument("paths", nargs="+", type=Path, metavar="PATH",
+                   help="a machine file, a folder of them, or a machine's name (a plug-in's or in --lib)")
     p.add_argument("-o", "--output", type=Path, default=Path("."), metavar="DIR", help="default: .")
     p.add_argument(
         "--format",
@@ -101,7 +102,10 @@ def _main(args: argparse.Namespace) -> int:
 
 def draw(args: argparse.Namespace) -> dict[str, bytes]:
     """Every output file's name and bytes, all drawn in memory; raises on bad input."""
-    figures = _figures(args, machine_files(args.paths))
+    with stdout_to_stderr():
+        registry = Registry.discover()
+    named = [machine_path(p, args.lib, registry) for p in args.paths]
+    figures = _figures(args, machine_files(named), registry)
     link_ext = next((f for f in args.format if f != "dot"), "svg")
     outputs: dict[str, bytes] = {}
     for figure in figures:
@@ -127,12 +131,10 @@ def machine_files(paths: Sequence[Path]) -> list[Path]:
     return list(dict.fromkeys(files))
 
 
-def _figures(args: argparse.Namespace, files: list[Path]) -> list[Figure]:
+def _figures(args: argparse.Namespace, files: list[Path], registry: Registry) -> list[Figure]:
     figures: list[Figure] = []
     names: list[str] = []
     if files:
-        with stdout_to_stderr():
-            registry = Registry.discover()
         loaded = load(files, libs=args.lib, registry=registry)
         src = Sources.from_loaded(loaded, registry)
         names = [mf.name for mf in loaded.roots]
@@ -155,12 +157,14 @@ def _read_trace(path: Path) -> list[dict[str, object]]:
         records = read_jsonl(path)
     except OSError as exc:
         raise UsageError(f"--trace {path}: {exc.strerror or exc}") from exc
-    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+    except ValueError as exc:  # JSONDecodeError and UnicodeDecodeError among them
         raise UsageError(f"--trace {path}: not a JSON-lines trace ({exc})") from exc
     for line, record in enumerate(records, start=1):
         if not _is_record(record):
             raise UsageError(f"--trace {path}:{line}: not a trace record of hfsm-run --trace")
-    return records
+    if not records:
+        raise UsageError(f"--trace {path}: the trace has no records")
+    return [r for r in records if r["agent"] is not None]  # the run's own (its flags, the operator's)
 
 
 def _is_record(record: object) -> bool:
@@ -173,7 +177,7 @@ def _is_record(record: object) -> bool:
         and isinstance(t, int | float)
         and not isinstance(t, bool)
         and isinstance(record.get("kind"), str)
-        and isinstance(record.get("agent"), str)
+        and (isinstance(record.get("agent"), str) or record.get("agent") is None)
     )
 
 

@@ -6,6 +6,7 @@ machines along the search path (`--lib` folders, then the plug-ins' machines and
 
 from __future__ import annotations
 
+import fnmatch
 import json
 from collections.abc import Iterable
 from pathlib import Path
@@ -15,14 +16,15 @@ from hfsm.builtins import BUILTINS
 from hfsm.checks.context import machine_spec
 from hfsm.errors import UserError
 from hfsm.library import PROJECT_MACHINES, SUFFIXES, load_machine_file
+from hfsm.primitive import Primitive
 from hfsm.registry import Registry
 from hfsm.spec import BehaviourSpec, ParamSpec
 
 HEADER = """# Behaviours
 
-Every behaviour a machine can call with `do:`, as `hfsm-run --list` prints it (regenerate with
-`.venv/bin/hfsm-run --list > docs/BEHAVIOURS.md`; a test fails when this file is stale).
-Failures are the outcomes that count as failing (SPEC 6); outputs are what `save:` may take.
+Every behaviour a machine can call with `do:`: the built-ins, the primitives of the installed
+plug-ins and the machines found by name. Failures are the outcomes that count as failing; outputs
+are what `save:` may take.
 """
 
 
@@ -52,17 +54,37 @@ def _shown(path: Path) -> str:
         return str(path)
 
 
-def render(registry: Registry, libs: Iterable[Path]) -> str:
-    out = [HEADER]
-    out.append("## Built-ins\n")
-    out.extend(_entry(spec, "built-in") for spec in BUILTINS.values())
-    out.append("## Primitives\n")
-    for prim in sorted(registry, key=lambda p: p.spec.name):
-        world = f", world `{prim.spec.world}`" if prim.spec.world else ""
-        out.append(_entry(prim.spec, f"primitive `{prim.where}`{world}"))
-    out.append("## Machines\n")
-    out.extend(_entry(spec, f"machine `{where}`") for spec, where in machine_specs(machine_folders(libs)))
+def render(registry: Registry, libs: Iterable[Path], pattern: str = "") -> str:
+    """Every behaviour a run can call, or those whose name matches `pattern` (a part of the name, or
+    a shell pattern such as `tararc_*`) or whose world it names (`sim`)."""
+    def shown(spec: BehaviourSpec) -> bool:
+        return matches(spec, pattern)
+
+    machines = [(spec, where) for spec, where in machine_specs(machine_folders(libs)) if shown(spec)]
+    out = [HEADER if not pattern else f"# Behaviours matching '{pattern}'\n"]
+    sections = [
+        ("Built-ins", [_entry(spec, "built-in") for spec in BUILTINS.values() if shown(spec)]),
+        ("Primitives", [_primitive(p) for p in sorted(registry, key=lambda p: p.spec.name) if shown(p.spec)]),
+        ("Machines", [_entry(spec, f"machine `{where}`") for spec, where in machines]),
+    ]
+    for title, entries in sections:
+        if entries or not pattern:
+            out += [f"## {title}\n", *entries]
+    if pattern and len(out) == 1:
+        out.append(f"No behaviour's name or world matches '{pattern}'.\n")
     return "\n".join(out)
+
+
+def matches(spec: BehaviourSpec, pattern: str) -> bool:
+    if not pattern:
+        return True
+    low = pattern.lower()
+    return low in spec.name or fnmatch.fnmatchcase(spec.name, low) or low == (spec.world or "")
+
+
+def _primitive(prim: Primitive) -> str:
+    world = f", world `{prim.spec.world}`" if prim.spec.world else ""
+    return _entry(prim.spec, f"primitive `{prim.where}`{world}")
 
 
 def _entry(spec: BehaviourSpec, what: str) -> str:

@@ -13,6 +13,7 @@ from typing import Any
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import UsageError, UserError
 from hfsm.library import PROJECT_MACHINES
+from hfsm.trace import json_line
 
 MAX_TRACE_BYTES = 1 << 30
 
@@ -102,13 +103,24 @@ def read_trace(path: Path) -> list[dict[str, Any]]:
             if not line.strip():
                 continue
             try:
-                record = json.loads(line.rstrip("\n"))
+                record = json_line(line.rstrip("\n"))
             except json.JSONDecodeError as exc:
                 raise TraceError(f"{path}:{number}:{exc.colno}: not a trace record: {exc.msg}") from None
-            if not isinstance(record, dict) or not isinstance(record.get("path"), list):
-                raise TraceError(f"{path}:{number}:1: not a trace record (an object with a 'path')")
+            except ValueError as exc:
+                raise TraceError(f"{path}:{number}:1: not a trace record: {exc}") from None
+            if not _is_record(record):
+                raise TraceError(f"{path}:{number}:1: not a trace record (an object with a 'path' of names, "
+                                 "a time 't' and an 'agent')")
             records.append(record)
     return records
+
+
+def _is_record(record: object) -> bool:
+    if not isinstance(record, dict):
+        return False
+    path, t, agent = record.get("path"), record.get("t", 0.0), record.get("agent", "")
+    return (isinstance(path, list) and all(isinstance(p, str) for p in path)
+            and isinstance(t, int | float) and not isinstance(t, bool) and isinstance(agent, str))
 
 
 def top_name(records: list[dict[str, Any]], path: Path) -> str:

@@ -8,7 +8,7 @@ from typing import Any
 from hfsm.errors import Finding, UsageError, UserError
 from hfsm.model import Machine
 from hfsm.names import did_you_mean
-from hfsm.spec import coerce, type_ok
+from hfsm.spec import coerce, shown, type_ok
 from hfsm.yamlio import Document, parse_text
 
 
@@ -66,7 +66,7 @@ def parse_params(
             continue
         if not type_ok(value, param.type):
             problems.add(
-                ("params", key), "E306", f"--param {key}: '{name}' takes {param.type}, not {value!r}"
+                ("params", key), "E306", f"--param {key}: '{name}' takes {param.type}, not {shown(value)}"
             )
             continue
         given[key] = coerce(value, param.type)

@@ -7,6 +7,7 @@ import sys
 from collections.abc import Iterable
 from typing import TYPE_CHECKING, Any, TextIO
 
+from hfsm.cli import snippet
 from hfsm.errors import Finding
 
 if TYPE_CHECKING:  # `--check` prints findings without loading the interpreter
@@ -15,8 +16,12 @@ if TYPE_CHECKING:  # `--check` prints findings without loading the interpreter
 
 
 def findings(items: Iterable[Finding], out: TextIO | None = None) -> None:
+    """Each finding's line, then its source line with a caret under what it points at."""
+    out = out or sys.stderr
+    colour = snippet.use_colour(out)
+    source = snippet.file_lines()
     for f in items:
-        print(f.format(), file=out or sys.stderr)
+        print(snippet.render(f, source(f.file), colour=colour), file=out)
 
 
 def json_result(result: RunResult, extra: dict[str, Any]) -> str:

@@ -1,4 +1,4 @@
-"""`hfsm-run`: check a machine file and run it (SPEC section 10)."""
+"""`hfsm-run`: check a machine file and run it (docs/REFERENCE.md#hfsm-run)."""
 
 from __future__ import annotations
 
@@ -7,11 +7,16 @@ import logging
 import sys
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from hfsm import plugins
-from hfsm.cli import guard, report
+from hfsm.autonomy import Decision, level_of
+from hfsm.cli import guard, operating, report, resume
 from hfsm.cli.fail import check_failures, fail_arg
 from hfsm.cli.history import top_params
+from hfsm.cli.named import machine_path
+from hfsm.cli.newplugin import new_plugin, schema_hint
+from hfsm.cli.operator_file import read_decisions
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import UsageError, UserError
 from hfsm.load import Loaded, load, worlds_needed
@@ -19,6 +24,9 @@ from hfsm.monitor import live
 from hfsm.names import is_name
 from hfsm.registry import Registry
 from hfsm.world import WORLDS_GROUP, NullWorld, World, WorldFactory
+
+if TYPE_CHECKING:
+    from hfsm.runtime.run import RunResult
 
 
 def _factories() -> dict[str, WorldFactory]:
@@ -52,12 +60,19 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
     p.add_argument("--max-time", type=guard.MAX_TIME, default=3600.0, metavar="S", help="default 3600")
     p.add_argument("--trace", type=Path, metavar="FILE.jsonl", help="write the trace, as the run goes")
     p.add_argument("--json", action="store_true", help="print one JSON object on stdout")
+    p.add_argument("--replay", type=Path, metavar="CE.jsonl", help="run a counterexample of hfsm-verify")
     p.add_argument("--check", action="store_true", help="validate and exit")
     p.add_argument("--strict", action="store_true", help="warnings are errors")
     p.add_argument("--schema", action="store_true", help="print the JSON Schema of machine files")
-    p.add_argument("--list", action="store_true", help="print every behaviour a run can call (Markdown)")
+    p.add_argument("--list", nargs="?", const="", metavar="PATTERN",
+                   help="print every behaviour a run can call (Markdown), or those whose name or world "
+                   "matches PATTERN; with FILE, the machines beside it too")
+    p.add_argument("--new-plugin", type=Path, metavar="DIR",
+                   help="write a plug-in package to start from in DIR (a primitive, a machine, entry points)")
     p.add_argument("--traceback", action="store_true", help="show Python tracebacks of run-time errors")
     p.add_argument("--quiet", action="store_true", help="no summary table on stderr")
+    p.add_argument("--fail-exit", action="store_true",
+                   help="exit 3 when the top machine ends in one of its failures (timeout included)")
     p.add_argument(
         "--fail",
         action="append",
@@ -66,6 +81,7 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
         metavar="AGENT@S",
         help="fail that agent S seconds into the run (repeatable)",
     )
+    operating.add_arguments(p)
     for factory in factories.values():
         factory.add_arguments(p.add_argument_group(f"--world {factory.name}"))
     live.add_arguments(p)
@@ -75,11 +91,13 @@ def build_parser(factories: dict[str, WorldFactory]) -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None) -> int:
     factories = _factories()
     try:
-        args = build_parser(factories).parse_args(argv)
+        parser = build_parser(factories)
+        args = parser.parse_args(argv)
     except SystemExit as exit_:  # a bad flag (2, usage printed) or --help (0): a code, for callers in process
         return exit_.code if isinstance(exit_.code, int) else 2
     logging.basicConfig(level=logging.INFO, format="%(message)s", stream=sys.stderr)
     try:
+        resume.prepare(args, parser, sys.argv[1:] if argv is None else argv)
         with guard.signals_raise():
             return _main(args, factories)
     except (UserError, UsageError) as err:
@@ -102,16 +120,19 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         from hfsm.schema import schema_text
 
         sys.stdout.write(schema_text())
+        print(schema_hint(), file=sys.stderr)
         return 0
-    if args.list:
+    if args.new_plugin is not None:
+        return new_plugin(args.new_plugin)
+    if args.list is not None:
         return _list(args)
     if args.file is None:
-        raise UsageError("give a machine file (or --schema, or --list)")
+        raise UsageError("give a machine file or name (or --list, --schema, --new-plugin DIR)")
     with stdout_to_stderr():
         registry = Registry.discover()
     if args.world is not None:
         registry = registry.for_world(args.world)
-    args.file = _named(args.file, args.lib, registry)
+    args.file = machine_path(args.file, args.lib, registry)
     inputs = {"none": NullWorld().inputs(), **{n: f.inputs() for n, f in factories.items()}}
     loaded = load(
         [args.file],
@@ -119,10 +140,11 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         registry=registry,
         strict=args.strict,
         world=args.world,
-        world_inputs=inputs,
+        world_inputs=None if args.replay else inputs,  # a replay's inputs are its schedule's
     )
     report.findings(loaded.warnings)
     top = loaded.roots[0]
+    args.edited = resume.edited(args.resumed, loaded) if args.resumed else []
     if args.check:
         if args.param or args.history:  # the params given are checked too
             top_params(args.param, args.history, top, registry)
@@ -133,31 +155,29 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
                 check(args)
         print(f"{args.file}: ok ({len(loaded.machines)} machines checked)", file=sys.stderr)
         return 0
+    if args.replay:
+        from hfsm.cli.replay import replayed
+
+        return replayed(args, loaded, registry)
     params = top_params(args.param, args.history, top, registry)
     world = _world(args, loaded, registry, factories)
     started = False
     try:
         agents = _agents(args, world)
         check_failures(args.fail, agents)
+        decisions = read_decisions(args.operator, agents) if args.operator else []
+        if args.resumed:  # the trace's decisions up to T, then the script's after it
+            decisions = args.resumed.decisions + [d for d in decisions if d.t > args.resumed.at]
         trace_path = args.trace or world.default_trace
         outputs = [("--trace", trace_path)] if trace_path else []
         outputs += [("--video", Path(p)) for p in getattr(world, "outputs", ())]
         guard.check_outputs(outputs, _inputs(args, loaded))
         started = True
-        return _run(args, loaded, registry, world, params, agents, trace_path)
+        return _run(args, loaded, registry, world, params, agents, trace_path, decisions)
     finally:
         files = guard.close_world(world)
         for path in files if started else ():
             print(f"wrote {path}", file=sys.stderr)
-
-
-def _named(file: Path, libs: list[Path], registry: Registry) -> Path:
-    """FILE, or a machine's name (`hfsm-run move_furniture`) found in --lib folders and plug-ins."""
-    if file.exists() or not is_name(str(file)):
-        return file
-    from hfsm.library import Library
-
-    return Library([*libs, *registry.machine_folders], registry).find(str(file)) or file
 
 
 def _list(args: argparse.Namespace) -> int:
@@ -167,7 +187,8 @@ def _list(args: argparse.Namespace) -> int:
         registry = Registry.discover()
     if args.world is not None:
         registry = registry.for_world(args.world)
-    sys.stdout.write(render(registry, [*args.lib, *registry.machine_folders]))
+    beside = [args.file.parent] if args.file is not None and args.file.is_file() else []
+    sys.stdout.write(render(registry, [*beside, *args.lib, *registry.machine_folders], args.list))
     return 0
 
 
@@ -217,20 +238,27 @@ def _run(
     params: dict[str, object],
     agents: list[str],
     trace_path: Path | None,
+    decisions: list[Decision],
 ) -> int:
     from hfsm.cli.stop import stoppable  # not needed to check: loaded only to run
     from hfsm.cli.tracefile import TraceFile
     from hfsm.runtime.program import Program
     from hfsm.runtime.run import RunOptions, run
 
-    options = RunOptions(loaded.roots[0].name, agents, params, args.seed, args.max_time, args.fail)
+    options = RunOptions(loaded.roots[0].name, agents, params, args.seed, args.max_time, args.fail,
+                         autonomy=level_of(args.autonomy), decisions=decisions, breaks=args.breaks)
+    args.agent_names = agents
     program = Program(loaded.machines, registry, args.dt)
     trace = TraceFile(trace_path) if trace_path else None
-    sink, monitor = live.sinks(args, trace, loaded, registry, loaded.roots[0].name, world)
+    checked = resume.begin(trace, args, loaded, program.dt)
+    sink, monitor = live.sinks(args, checked, loaded, registry, loaded.roots[0].name, world)
+    if monitor is not None and monitor.control is not None:
+        options.live = monitor.control.queue
     stop = guard.StopFlag()
     try:
         with guard.signals_flag(stop):
             result = run(program, stoppable(world, stop), options, sink)
+        resume.end(checked, result)
     finally:
         if sink:
             sink.close()
@@ -246,12 +274,40 @@ def _run(
     if not args.quiet:
         report.summary(result.stats, args.dt)
     if result.error:
-        print(f"error: {result.error}", file=sys.stderr)
+        _print_error(result, loaded)
         if args.traceback and result.traceback:
             print(result.traceback, file=sys.stderr, end="")
     if trace and not trace.failed:
         print(f"wrote {trace_path}", file=sys.stderr)
-    return stop.exit_code if stop.signum else result.exit_code
+    if stop.signum:
+        return stop.exit_code
+    failed = _failure_ends(result, loaded) if args.fail_exit and not result.error else []
+    for agent, outcome in failed:
+        print(f"hfsm-run: {agent} ended in the failure outcome '{outcome}' (--fail-exit: exit 3)",
+              file=sys.stderr)
+    return 3 if failed else result.exit_code
+
+
+def _failure_ends(result: RunResult, loaded: Loaded) -> list[tuple[str, str]]:
+    """The agents whose top machine ended in one of its failure outcomes, with the outcome."""
+    failures = loaded.roots[0].model.failure_outcomes
+    return [(name, end.outcome) for name, end in result.agents.items() if end.outcome in failures]
+
+
+def _print_error(result: RunResult, loaded: Loaded) -> None:
+    """The run's error, at the file, line and column of the state (or expression) it happened in."""
+    from hfsm.cli.runerror import locate
+
+    found = None
+    if result.error_origin and result.error:
+        top = loaded.roots[0].name
+        found = locate(
+            loaded.machines, top, result.error_origin, result.error, result.error_agent, result.time
+        )
+    if found is None:
+        print(f"error: {result.error}", file=sys.stderr)
+    else:
+        report.findings([found])
 
 
 def entry() -> None:

@@ -26,6 +26,10 @@ class _StoppableWorld:
             raise Interrupted("", f"stopped by {self._flag.name}")
         return self._world.collect(tick)
 
+    def stopping(self) -> bool:
+        """Whether a stop signal came (a run that waits for its operator looks)."""
+        return self._flag.signum is not None
+
     def __getattr__(self, name: str) -> Any:
         return getattr(self._world, name)
 

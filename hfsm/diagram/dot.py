@@ -192,6 +192,11 @@ def _emphasis(emphasis: Emphasis, style: str) -> dict[str, str]:
     return {}
 
 
+# An arc held for the operator below its level, as FlexBE's editor colours them: the one
+# colour in a monochrome figure, darker for the levels that ask a person more often.
+LEVEL_COLOURS = {"off": "#2b8a3e", "low": "#1864ab", "high": "#c2410c", "full": "#b91c1c"}
+
+
 def _edge(e: Edge) -> dict[str, str]:
     attrs = dict(STYLE[e.style])
     label = labels(e.labels)
@@ -205,6 +210,8 @@ def _edge(e: Edge) -> dict[str, str]:
         attrs["ltail"] = e.ltail
     if e.lhead:
         attrs["lhead"] = e.lhead
+    if e.level:
+        attrs.update({"color": LEVEL_COLOURS[e.level], "fontcolor": LEVEL_COLOURS[e.level]})
     if e.emphasis == "faded":
         attrs.update({"color": FADED, "fontcolor": FADED})
     return attrs

@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable, Collection, Mapping, Sequence
 from dataclasses import dataclass, field
 
+from hfsm.autonomy import LEVELS, join_key
 from hfsm.checks.context import CheckContext
 from hfsm.diagram import regions, text
 from hfsm.diagram.model import Cluster, Edge, Figure, Item, Node, Ref, Role, Style
@@ -103,6 +104,8 @@ class Builder:
         if isinstance(st, ChoiceState):
             return Node(node_id(ref), "choice", s, ref=ref, tooltip=st.doc or "")
         timer = (f"timer {text.timer(st.timer, m.params)}",) if st.timer is not None else ()
+        if st.scope is not None:
+            timer = (text.scope(st.scope.name), *timer)
         if isinstance(st, ParallelState):
             if inner is not None:
                 return regions.cluster(self, st, ref, inner, timer)
@@ -156,13 +159,16 @@ class Builder:
             lhead = "" if arc.target in outcomes or arc.target not in inner else inner[arc.target].lhead
             style = _STYLE[arc.kind]
             ref = (*rel, arc.source)
-            label = _label(arc)
+            level = _level(m, arc)
+            label = f"{_label(arc)} ({level})" if level else _label(arc)
             key = (tail, head, style, ltail, ref)
             old = merged.get(key)
             labels, events = (
                 ((*old.labels, label), (*old.events, arc.event)) if old else ((label,), (arc.event,))
             )
-            merged[key] = Edge(tail, head, labels, style, ref, events, ltail, lhead=lhead)
+            if old is not None and old.level and (not level or LEVELS.index(old.level) > LEVELS.index(level)):
+                level = old.level
+            merged[key] = Edge(tail, head, labels, style, ref, events, ltail, lhead=lhead, level=level)
         return [*merged.values(), *retries]
 
     def _retry(
@@ -211,6 +217,15 @@ class Builder:
         if arc.kind not in ("message", "watch", "join") and arc.event in part.outcomes:
             return part.outcomes[arc.event], ""
         return part.entry, cluster_id((*rel, arc.source))
+
+
+def _level(m: Machine, arc: Arc) -> str:
+    """The autonomy level the arc needs, or ''."""
+    state = m.states.get(arc.source)
+    if not isinstance(state, CallState | ParallelState) or not state.autonomy:
+        return ""
+    key = join_key(arc.target) if arc.kind in ("join", "else") else arc.event
+    return state.autonomy.get(key, "")
 
 
 def _label(arc: Arc) -> str:

@@ -46,6 +46,12 @@ _NODES: tuple[tuple[Node, str], ...] = (
         Node("timed", "builtin", "state", ('wait_for(message="go")', "timer 5 s")),
         "a state with its own timer: the duration in its label, its 'timeout' arc dashed",
     ),
+    (
+        Node("scoped", "machine", "state", ("machine()", "scope: pair_\u2026")),
+        "a state whose behaviour runs under a scope, a team within the team: its messages and "
+        "barriers are private to the scope's agents (a literal name is shown whole; one given by an "
+        "expression by the text it starts with)",
+    ),
     (Node("start", "start", "start"), "marks the initial state: the arc from it points there"),
     (
         Node("timer", "timer", "", xlabel="60 s"),
@@ -95,6 +101,12 @@ def legend() -> Figure:
         firsts.append(node.id)
     for label, style, meaning in _EDGES:
         items += _arc_row(label, style, meaning, edges, rows, firsts)
+    held = (
+        "coloured, its level in parentheses: an arc that needs that autonomy level; below it the arc "
+        "is held until the operator answers (autonomy:)"
+    )
+    items += _arc_row("failed (high)", "failure", held, edges, rows, firsts)
+    edges[-1] = Edge(edges[-1].source, edges[-1].target, edges[-1].labels, "failure", level="high")
     retried = Node("retried", "primitive", "state", ("navigate()",))
     note = Node(
         "retried@note",

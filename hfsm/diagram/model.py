@@ -107,6 +107,7 @@ class Edge:
     lhead: str = ""  # a cluster id the arc ends at the border of
     count: int | None = None  # overlay: how often the arc was taken
     emphasis: Emphasis = "normal"
+    level: str = ""  # the highest autonomy level an event of this arc needs: coloured
 
 
 @dataclass(frozen=True)

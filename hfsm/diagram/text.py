@@ -29,7 +29,8 @@ def shorten(text: str, width: int) -> str:
 
 
 def number(value: float) -> str:
-    """The fewest digits that read back the same; a whole float without `.0` (SPEC 7)."""
+    """The fewest digits that read back the same; a whole float without `.0`
+    (docs/REFERENCE.md#expressions)."""
     if isinstance(value, int):
         return str(value)
     if not math.isfinite(value):
@@ -72,6 +73,21 @@ def call(do: str, args: Mapping[str, Any]) -> tuple[str, ...]:
             current = "  " + piece
     lines.append(current + ")")
     return tuple(lines)
+
+
+_LEADING_TEXT = re.compile(r"""^\s*(['"])([a-z0-9_]*)\1\s*\+""")
+
+
+def scope(name: str) -> str:
+    """A state's `scope:` as its label line (REFERENCE.md#scopes): `scope: pair` for a literal name; for an
+    expression that starts with a literal, that literal and an ellipsis (`scope: pair_…`)."""
+    found = _WHOLE_EXPR.match(name.strip())
+    if found is None:
+        return f"scope: {name}"
+    leading = _LEADING_TEXT.match(found.group(1))
+    if leading is not None:
+        return f"scope: {leading.group(2)}{ELLIPSIS}"
+    return f"scope: {shorten(found.group(1).strip(), VALUE_WIDTH)}"
 
 
 def timer(t: float | str, params: Mapping[str, Param] | None = None) -> str:

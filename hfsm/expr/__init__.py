@@ -1,10 +1,11 @@
-"""Expressions (SPEC section 7): what they may read (scope), how they are compiled (compiler), what
+"""Expressions (docs/REFERENCE.md#expressions): what they may read (scope), how they are compiled (compiler),
+what
 they do when they run (ops), and values as text (text)."""
 
-from hfsm.expr.compiler import TIMED, compile_expr, reads
+from hfsm.expr.compiler import TIMED, compile_expr, reads, reads_at
 from hfsm.expr.ops import bounded
 from hfsm.expr.scope import NOWHERE, ExprSyntaxError, ExprValueError, Fn, Live, Names, Scope
-from hfsm.expr.text import format_number, to_text
+from hfsm.expr.text import format_number, short, to_text
 
 __all__ = [
     "NOWHERE",
@@ -19,5 +20,7 @@ __all__ = [
     "compile_expr",
     "format_number",
     "reads",
+    "reads_at",
+    "short",
     "to_text",
 ]

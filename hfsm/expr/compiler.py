@@ -4,35 +4,47 @@ reaches `eval`. Names are checked when the file is loaded; values when the expre
 from __future__ import annotations
 
 import ast
-import io
-import tokenize
+import difflib
+from collections.abc import Callable
 from typing import Any
 
 from hfsm import bounds
-from hfsm.expr.ops import BIN, CMP, FUNCS, LITERAL_NAMES, all_of, any_of, arith, bounded, is_number, kind
+from hfsm.expr.funcs import FUNCS, is_number, kind
+from hfsm.expr.ops import BIN, CMP, LITERAL_NAMES, all_of, any_of, arith, bounded
 from hfsm.expr.scope import IN, ROOTS, ExprSyntaxError, ExprValueError, Fn, Names, Scope
+from hfsm.expr.source import Source
+from hfsm.expr.text import short
 from hfsm.names import did_you_mean
 
 
 class _Compiler:
-    def __init__(self, names: Names) -> None:
+    def __init__(self, names: Names, where: Callable[[ast.AST], tuple[int, int]]) -> None:
         self.names = names
+        self.where = where  # a node's offsets in the source given to compile_expr
+
+    def at(self, message: str, node: ast.AST) -> ExprSyntaxError:
+        return ExprSyntaxError(message, *self.where(node))
 
     def compile(self, node: ast.AST) -> Fn:
         method = getattr(self, f"c_{type(node).__name__}", None)
         if method is None:
-            raise ExprSyntaxError(f"'{_snippet(node)}' is not allowed in an expression")
-        fn: Fn = method(node)
+            raise self.at(f"'{_snippet(node)}' is not allowed in an expression", node)
+        try:
+            fn: Fn = method(node)
+        except ExprSyntaxError as exc:
+            if exc.start is None:
+                raise self.at(exc.message, node) from None
+            raise
         return fn
 
     def c_Constant(self, node: ast.Constant) -> Fn:
         value = node.value
         if not isinstance(value, int | float | str | bool | type(None)):
-            raise ExprSyntaxError(f"literal {value!r} is not allowed")
+            raise ExprSyntaxError(f"literal {short(repr(value))} is not allowed")
         try:
             bounds.check_scalar(value)
         except bounds.LimitError as exc:
-            raise ExprSyntaxError(f"literal {_snippet(node)[:40]}: {exc}") from None
+            raise ExprSyntaxError(f"literal {_snippet(node)}: {exc}") from None
         return lambda s: value
 
     def c_Name(self, node: ast.Name) -> Fn:
@@ -42,14 +54,21 @@ class _Compiler:
         if node.id in ROOTS:
             shown = "in" if node.id == IN else node.id
             raise ExprSyntaxError(f"'{shown}' alone is not a value; write {shown}.NAME")
-        hint = did_you_mean(node.id, ["true", "false", "null", "params", "vars", "agent", "state", "machine"])
-        raise ExprSyntaxError(f"unknown name '{node.id}'{hint}")
+        raise ExprSyntaxError(f"unknown name '{short(node.id)}'{self.names.hint(node.id)}")
 
     def c_Attribute(self, node: ast.Attribute) -> Fn:
         if not isinstance(node.value, ast.Name) or node.value.id not in ROOTS:
+            inner = _snippet(node.value)
+            hint = ""
+            if isinstance(node.value, ast.Attribute | ast.Subscript):
+                hint = f"; a dict's entry is read with brackets: {inner}['{short(node.attr)}']"
+            elif isinstance(node.value, ast.Name):
+                shown = ["in" if root == IN else root for root in ROOTS]
+                close = difflib.get_close_matches(node.value.id, shown, n=1, cutoff=0.6)
+                hint = f"; did you mean '{close[0]}.{short(node.attr)}'?" if close else ""
             raise ExprSyntaxError(
-                f"'{_snippet(node)}': only params.X, vars.X, in.X, agent.id, state.time, state.attempt "
-                "and machine.time"
+                f"'{_snippet(node)}': no attribute access but params.X, vars.X, in.X, agent.id, "
+                f"state.time, state.attempt, machine.time, scope.name and scope.agents{hint}"
             )
         root, attr = node.value.id, node.attr
         self.names.check(root, attr)
@@ -63,6 +82,8 @@ class _Compiler:
             return lambda s: s.live.input(attr)
         if root == "machine":
             return lambda s: s.live.machine_time()
+        if root == "scope":
+            return (lambda s: s.live.scope_name()) if attr == "name" else (lambda s: s.live.scope_agents())
         if attr == "time":
             return lambda s: s.live.state_time()
         return lambda s: s.live.state_attempt()
@@ -75,7 +96,8 @@ class _Compiler:
             try:
                 return container[key]
             except (KeyError, IndexError, TypeError) as exc:
-                raise ExprValueError(f"cannot take [{key!r}] of {kind(container)}: {exc}") from None
+                message = f"cannot take [{short(repr(key))}] of {kind(container)}: {short(str(exc))}"
+                raise ExprValueError(message) from None
 
         return subscript
 
@@ -151,87 +173,64 @@ class _Compiler:
         return lambda s: bounded({k(s): v(s) for k, v in pairs})
 
     def c_Call(self, node: ast.Call) -> Fn:
-        if not isinstance(node.func, ast.Name) or node.func.id not in FUNCS:
-            name = node.func.id if isinstance(node.func, ast.Name) else _snippet(node.func)
-            raise ExprSyntaxError(f"unknown function '{name}'{did_you_mean(name, FUNCS)}")
+        if not isinstance(node.func, ast.Name):
+            raise self.at(f"'{_snippet(node.func)}' cannot be called: only functions by name", node.func)
+        name = node.func.id
+        func = FUNCS.get(name)
+        if func is None:
+            raise self.at(f"unknown function '{short(name)}'{did_you_mean(name, FUNCS)}", node.func)
         if node.keywords or any(isinstance(a, ast.Starred) for a in node.args):
-            raise ExprSyntaxError(f"'{node.func.id}()' takes plain arguments only")
-        fn, args = FUNCS[node.func.id], [self.compile(a) for a in node.args]
+            raise ExprSyntaxError(f"'{name}()' takes plain arguments only")
+        if len(node.args) < func.least or (func.most is not None and len(node.args) > func.most):
+            raise ExprSyntaxError(f"{name}() takes {func.arity()}, not {len(node.args)}")
+        fn, args = func.fn, [self.compile(a) for a in node.args]
 
         def call(s: Scope) -> Any:
             try:
                 return fn(*(a(s) for a in args))
-            except (TypeError, ValueError) as exc:
-                raise ExprValueError(f"{node.func.id}(): {exc}") from None  # type: ignore[attr-defined]
+            except (TypeError, ValueError, OverflowError) as exc:
+                raise ExprValueError(f"{name}(): {exc}") from None
 
         return call
 
 
 def _snippet(node: ast.AST) -> str:
-    return ast.unparse(node).replace(f"{IN}.", "in.")
-
-
-_OPERANDS = (tokenize.NUMBER, tokenize.STRING)
-
-
-def _inputs_renamed(source: str) -> str:
-    """`in.x` as `__in__.x`, where `in` stands as an operand (not the operator `a in b`)."""
-    if "in" not in source:
-        return source
-    try:
-        tokens = [t for t in tokenize.generate_tokens(io.StringIO(source).readline) if t.type != tokenize.NL]
-    except (tokenize.TokenError, SyntaxError, IndentationError):
-        return source  # ast.parse reports it
-    lines = source.splitlines(keepends=True)
-    starts = [0]
-    for line in lines:
-        starts.append(starts[-1] + len(line))
-    cuts = []
-    for i, tok in enumerate(tokens):
-        if tok.type == tokenize.NAME and tok.string == IN:
-            raise ExprSyntaxError(f"unknown name '{IN}'")
-        if tok.string != "in" or i + 1 >= len(tokens) or tokens[i + 1].string != ".":
-            continue
-        before = tokens[i - 1] if i else None
-        operand_before = before is not None and (
-            before.type in _OPERANDS
-            or before.string in (")", "]", "}")
-            or (before.type == tokenize.NAME and before.string not in _KEYWORDS)
-        )
-        if not operand_before:
-            cuts.append(starts[tok.start[0] - 1] + tok.start[1])
-    for at in reversed(cuts):
-        source = source[:at] + IN + source[at + 2 :]
-    return source
-
-
-_KEYWORDS = {"and", "or", "not", "in", "if", "else", "is", "lambda"}
+    return short(ast.unparse(node).replace(f"{IN}.", "in."))
 
 
 def compile_expr(source: str, names: Names) -> Fn:
-    """Compile a bare expression; raise ExprSyntaxError with a readable message."""
-    text = _inputs_renamed(source.strip())
+    """Compile a bare expression; raise ExprSyntaxError with a readable message and the offsets in
+    `source` of the characters at fault."""
+    text = Source.of(source)
     try:
-        tree = ast.parse(text, mode="eval")
-    except SyntaxError as exc:
+        tree = text.parse()
+    except ExprSyntaxError as exc:
         bare = source.strip()
         hint = f"; a condition is a bare expression: write '{bare[2:-1]}'" if bare.startswith("${") else ""
-        raise ExprSyntaxError(f"bad expression '{source}': {exc.msg}{hint}") from None
-    return _Compiler(names).compile(tree.body)
+        message = f"bad expression '{short(bare)}': {exc.message}{hint}"
+        raise ExprSyntaxError(message, exc.start, exc.end) from None
+    return _Compiler(names, text.where).compile(tree)
 
 
 def reads(source: str) -> set[str]:
     """The dotted names an expression reads (`vars.n`, `state.time`, `in.x`); empty if it does not parse."""
+    return {name for name, _, _ in reads_at(source)}
+
+
+def reads_at(source: str) -> list[tuple[str, int, int]]:
+    """The dotted names an expression reads, each with its offsets in `source`, in the order
+    they stand; empty if it does not parse."""
     try:
-        tree = ast.parse(_inputs_renamed(source.strip()), mode="eval")
-    except (SyntaxError, ExprSyntaxError):
-        return set()
-    found = set()
+        text = Source.of(source)
+        tree = text.parse()
+    except ExprSyntaxError:
+        return []
+    found = []
     for node in ast.walk(tree):
         if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id in ROOTS:
             root = "in" if node.value.id == IN else node.value.id
-            found.add(f"{root}.{node.attr}")
-    return found
+            found.append((f"{root}.{node.attr}", *text.where(node)))
+    return sorted(found, key=lambda item: item[1])
 
 
 TIMED = frozenset({"state.time", "machine.time"})

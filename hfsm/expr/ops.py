@@ -9,6 +9,7 @@ from collections.abc import Callable
 from typing import Any
 
 from hfsm import bounds
+from hfsm.expr.funcs import is_number, kind
 from hfsm.expr.scope import ExprValueError, Fn, Scope
 
 BIN: dict[type, Callable[[Any, Any], Any]] = {
@@ -30,10 +31,6 @@ CMP: dict[type, Callable[[Any, Any], Any]] = {
     ast.NotIn: lambda a, b: not operator.contains(b, a),
 }
 LITERAL_NAMES = {"true": True, "false": False, "null": None}
-
-
-def is_number(value: Any) -> bool:
-    return isinstance(value, int | float) and not isinstance(value, bool)
 
 
 _SYMBOLS: dict[type, str] = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/", ast.FloorDiv: "//"}
@@ -66,33 +63,6 @@ def _bounded(op: type, fn: Callable[[Any, Any], Any], a: Any, b: Any) -> Any:
         raise ExprValueError(str(exc)) from None
     except OverflowError:
         raise ExprValueError("the result is too large for a number") from None
-
-
-def kind(value: Any) -> str:
-    return {bool: "bool", int: "int", float: "float", str: "str", list: "list", dict: "dict"}.get(
-        type(value), "null" if value is None else type(value).__name__
-    )
-
-
-def _len(value: Any) -> int:
-    if not isinstance(value, str | list | dict):
-        raise ExprValueError(f"len() of {kind(value)}")
-    return len(value)
-
-
-def _round(value: Any, digits: Any = None) -> Any:
-    if not is_number(value) or (digits is not None and not isinstance(digits, int)):
-        raise ExprValueError("round() takes a number and an optional whole number of digits")
-    return round(value) if digits is None else round(value, digits)
-
-
-def _abs(value: Any) -> Any:
-    if not is_number(value):
-        raise ExprValueError(f"abs() of {kind(value)}")
-    return abs(value)
-
-
-FUNCS: dict[str, Callable[..., Any]] = {"abs": _abs, "min": min, "max": max, "round": _round, "len": _len}
 
 
 def bounded(value: Any) -> Any:

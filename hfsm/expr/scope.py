@@ -1,4 +1,5 @@
-"""What an expression may read (SPEC 7, 12): the names allowed where it stands, and the scope it runs in."""
+"""What an expression may read (docs/REFERENCE.md#expressions, docs/REFERENCE.md#watches): the names allowed
+where it stands, and the scope it runs in."""
 
 from __future__ import annotations
 
@@ -6,11 +7,25 @@ from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass
 from typing import Any, Protocol
 
+from hfsm.expr.text import SHORT, short
 from hfsm.names import did_you_mean
 
 
 class ExprSyntaxError(Exception):
-    """An expression that cannot be accepted at load time."""
+    """An expression that cannot be accepted at load time; `start` and `end` are the offsets of the
+    characters at fault in the text given to the compiler (None: the whole expression)."""
+
+    def __init__(self, message: str, start: int | None = None, end: int | None = None) -> None:
+        super().__init__(message)
+        self.message = message
+        self.start = start
+        self.end = end if end is not None else start
+
+    def shifted(self, by: int) -> ExprSyntaxError:
+        """The same error, its offsets counted from `by` characters earlier (in an enclosing text)."""
+        if self.start is None:
+            return ExprSyntaxError(self.message, by, by)
+        return ExprSyntaxError(self.message, self.start + by, (self.end or self.start) + by)
 
 
 class ExprValueError(Exception):
@@ -18,7 +33,8 @@ class ExprValueError(Exception):
 
 
 class Live(Protocol):
-    """What changes while a state runs (SPEC 12, 13): read only when an expression asks."""
+    """What changes while a state runs (docs/REFERENCE.md#watches, docs/REFERENCE.md#retries): read only when
+    an expression asks."""
 
     def state_time(self) -> float: ...
 
@@ -27,6 +43,10 @@ class Live(Protocol):
     def machine_time(self) -> float: ...
 
     def input(self, name: str) -> Any: ...
+
+    def scope_name(self) -> str: ...
+
+    def scope_agents(self) -> list[str]: ...
 
 
 class _Nowhere:
@@ -44,6 +64,12 @@ class _Nowhere:
     def input(self, name: str) -> Any:
         raise ExprValueError(f"'in.{name}' cannot be read here")
 
+    def scope_name(self) -> str:
+        raise ExprValueError("'scope.name' cannot be read here")
+
+    def scope_agents(self) -> list[str]:
+        raise ExprValueError("'scope.agents' cannot be read here")
+
 
 NOWHERE: Live = _Nowhere()
 
@@ -59,8 +85,9 @@ class Scope:
 Fn = Callable[[Scope], Any]
 
 IN = "__in__"  # what `in.x` reads as once tokenized: `in` is a Python keyword
-ROOTS = ("params", "vars", "agent", "state", "machine", IN)
-LIVE = {"state": ("time", "attempt"), "machine": ("time",)}
+ROOTS = ("params", "vars", "agent", "state", "machine", "scope", IN)
+LIVE = {"state": ("time", "attempt"), "machine": ("time",), "scope": ("name", "agents")}
+BARE_NAMES = ("true", "false", "null", "params", "vars", "agent", "state", "machine", "scope")
 
 
 @dataclass(frozen=True)
@@ -77,7 +104,16 @@ class Names:
     machine_time: bool = True
     inputs: Collection[str] | None = None
 
-    def check(self, root: str, attr: str) -> None:
+    def check(self, root: str, name: str) -> None:
+        """Refuse `root.name` where it may not be read (the name shortened in the message)."""
+        try:
+            self._check(root, name)
+        except ExprSyntaxError as exc:
+            if len(name) <= SHORT:
+                raise
+            raise ExprSyntaxError(exc.message.replace(name, short(name))) from None
+
+    def _check(self, root: str, attr: str) -> None:
         if root == "agent":
             if attr != "id":
                 raise ExprSyntaxError(f"unknown name 'agent.{attr}'; only 'agent.id' exists")
@@ -96,7 +132,24 @@ class Names:
             raise ExprSyntaxError(f"'{root}.{attr}': only params and agent.id may be read here")
         if attr not in pool:
             kind = "param" if root == "params" else "variable"
-            raise ExprSyntaxError(f"unknown {kind} '{attr}'{did_you_mean(attr, pool)}")
+            other, other_root = (self.vars, "vars") if root == "params" else (self.params, "params")
+            if other is not None and attr in other:
+                hint = f"; did you mean '{other_root}.{attr}'?"
+            else:
+                hint = did_you_mean(attr, pool)
+            raise ExprSyntaxError(f"unknown {kind} '{attr}'{hint}")
+
+    def hint(self, name: str) -> str:
+        """A suggestion for a bare name: the var or param of that name, else the closest name."""
+        for root, pool in (("vars", self.vars), ("params", self.params)):
+            if pool is not None and name in pool:
+                return f"; did you mean '{root}.{name}'?"
+        qualified = [f"vars.{v}" for v in self.vars or ()] + [f"params.{p}" for p in self.params]
+        close = did_you_mean(name, [*BARE_NAMES, *qualified, *(self.vars or ()), *self.params])
+        for root, pool in (("vars", self.vars), ("params", self.params)):
+            if pool is not None and close and close.split("'")[1] in pool:
+                return close.replace("'", f"'{root}.", 1)
+        return close
 
     def _check_live(self, root: str, attr: str) -> None:
         known = LIVE[root]

@@ -1,10 +1,18 @@
-"""Values as text (SPEC 7): strings as they are, numbers in their fewest digits, lists and dicts as JSON."""
+"""Values as text (docs/REFERENCE.md#expressions): strings as they are, numbers in their fewest digits, lists
+and dicts as JSON."""
 
 from __future__ import annotations
 
 import json
 import math
 from typing import Any
+
+SHORT = 60  # characters of an expression or a name quoted in a message
+
+
+def short(text: str) -> str:
+    """Text quoted in a message: at most SHORT characters."""
+    return text if len(text) <= SHORT else text[: SHORT - 1] + "…"
 
 
 def format_number(value: float) -> str:

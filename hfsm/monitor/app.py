@@ -15,19 +15,25 @@ from starlette.responses import FileResponse, JSONResponse, Response, StreamingR
 from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
+from hfsm.monitor.control import Control, control_route
 from hfsm.monitor.hub import Hub
 
 STATIC = Path(__file__).parent / "static"
 POLL = 0.1  # seconds between looks at a live hub
 
 
-def create_app(hub: Hub, svgs: Mapping[str, str], title: str, video: Path | None = None) -> Starlette:
+def create_app(
+    hub: Hub, svgs: Mapping[str, str], title: str, video: Path | None = None, control: Control | None = None
+) -> Starlette:
     async def page(request: Request) -> Response:
         return FileResponse(STATIC / "index.html", headers={"Cache-Control": "no-store"})
 
     async def meta(request: Request) -> Response:
         shown = "/video" if video is not None and video.is_file() else None
-        return JSONResponse({"title": title, "live": hub.live, "machines": dict(svgs), "video": shown})
+        controls = control.state() if control is not None else None
+        return JSONResponse(
+            {"title": title, "live": hub.live, "machines": dict(svgs), "video": shown, "control": controls}
+        )
 
     async def movie(request: Request) -> Response:
         if video is None or not video.is_file():
@@ -54,6 +60,7 @@ def create_app(hub: Hub, svgs: Mapping[str, str], title: str, video: Path | None
         Route("/api/meta", meta),
         Route("/api/records", records),
         Route("/api/stream", stream),
+        control_route(control),
         Route("/video", movie),
         Mount("/static", StaticFiles(directory=STATIC), name="static"),
     ]

@@ -14,6 +14,7 @@ import time
 from typing import Any
 
 from hfsm.load import Loaded
+from hfsm.monitor.control import Control
 from hfsm.monitor.hub import Hub, MonitorSink
 from hfsm.registry import Registry
 from hfsm.trace import TraceSink
@@ -110,12 +111,15 @@ class Pacer:
 
 
 class LiveMonitor:
-    def __init__(self, loaded: Loaded, registry: Registry, title: str, port: int) -> None:
+    def __init__(
+        self, loaded: Loaded, registry: Registry, title: str, port: int, control: Control | None = None
+    ) -> None:
         from hfsm.monitor.figures import machine_svgs
         from hfsm.monitor.serve import Server
 
         self.hub = Hub(live=True)
-        self.server = Server(self.hub, machine_svgs(loaded, registry), title, port)
+        self.control = control
+        self.server = Server(self.hub, machine_svgs(loaded, registry), title, port, control=control)
         self.sink = MonitorSink(self.hub)
 
     def start(self) -> None:
@@ -153,7 +157,8 @@ def sinks(
         extra.append(label_sink())
     monitor = None
     if args.monitor is not None:
-        monitor = LiveMonitor(loaded, registry, title, args.monitor)
+        control = Control(args.agent_names, args.breaks)
+        monitor = LiveMonitor(loaded, registry, title, args.monitor, control)
         extra.append(monitor.sink)
     if args.realtime is not None:
         extra.append(Pacer(args.realtime))

@@ -12,6 +12,7 @@ import uvicorn
 
 from hfsm.errors import UsageError
 from hfsm.monitor.app import create_app
+from hfsm.monitor.control import Control
 from hfsm.monitor.hub import Hub
 
 HOST = "127.0.0.1"
@@ -21,12 +22,21 @@ class Server:
     """A uvicorn server on HOST:port (port 0: a free one) running in a daemon thread."""
 
     def __init__(
-        self, hub: Hub, svgs: Mapping[str, str], title: str, port: int = 0, video: Path | None = None
+        self,
+        hub: Hub,
+        svgs: Mapping[str, str],
+        title: str,
+        port: int = 0,
+        video: Path | None = None,
+        control: Control | None = None,
     ) -> None:
         self._socket = _bind(port)
         self.port = self._socket.getsockname()[1]
+        self.control = control
+        if control is not None:
+            control.serve_at(HOST, self.port)
         config = uvicorn.Config(
-            create_app(hub, svgs, title, video),
+            create_app(hub, svgs, title, video, control),
             log_level="warning",
             lifespan="off",
             timeout_graceful_shutdown=1,
@@ -38,7 +48,9 @@ class Server:
 
     @property
     def url(self) -> str:
-        return f"http://{HOST}:{self.port}/"
+        """The page's address; with the run's token when it may control the run."""
+        token = f"?token={self.control.token}" if self.control is not None else ""
+        return f"http://{HOST}:{self.port}/{token}"
 
     def start(self) -> None:
         self._thread.start()

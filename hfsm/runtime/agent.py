@@ -16,6 +16,7 @@ from typing import Any, Protocol
 from hfsm.expr import Scope
 from hfsm.primitive import Message
 from hfsm.runtime.live import Clock, FrameLive, Inputs
+from hfsm.runtime.scopes import Radio
 from hfsm.runtime.states import RMachine, RRegion, RState
 from hfsm.world import World
 
@@ -45,6 +46,9 @@ class Event:
         self.message = message
 
 
+HELD = Event("held")  # a state entered holds an arc at once: it waits, nothing is taken
+
+
 class Activity(Protocol):
     """A running built-in or primitive: a leaf of an agent's tree."""
 
@@ -60,12 +64,15 @@ class Frame:
     """One running machine: its memory, its current state, its timers, and what runs below it."""
 
     __slots__ = (
-        "_prefix", "_scope", "agent", "attempt", "below", "deadline", "entered", "machine", "params",
-        "retry_at", "started", "state", "state_deadline", "text", "up", "vars", "vars_shown",
+        "_prefix", "_scope", "agent", "attempt", "below", "deadline", "entered", "held", "in_with", "inner",
+        "machine", "params", "radio", "retry_at", "started", "state", "state_deadline", "text", "up",
+        "vars", "vars_shown",
     )  # fmt: skip
     entered: int  # the tick its current state was entered (set on entering it, as the two below)
     state_deadline: int | None
-    attempt: int  # the call of that state's behaviour, from 1 (SPEC 13)
+    attempt: int  # the call of that state's behaviour, from 1 (docs/REFERENCE.md#retries)
+    radio: Radio  # the scope its machine runs under (docs/REFERENCE.md#scopes)
+    inner: Radio  # the scope its current state gives what it runs: `radio`, or the state's `scope:`
 
     def __init__(
         self, machine: RMachine, params: dict[str, Any], agent: Agent, up: Frame | Region | None
@@ -84,6 +91,13 @@ class Frame:
         self.retry_at: int | None = None  # the tick a retry's delay ends in
         self.started = agent.clock.tick
         self.below: Any = None  # Activity | Frame | list[Region] | None
+        if up is None:
+            self.radio = agent.radio
+        else:
+            self.radio = up.inner if isinstance(up, Frame) else up.owner.inner
+        self.inner = self.radio
+        self.in_with = False  # a state's `with` being read: `scope.*` is the state's own scope
+        self.held: Any = None  # the arc its state holds for the operator (a holds.Hold)
 
     @property
     def scope(self) -> Scope:
@@ -151,7 +165,7 @@ class AgentResult:
     outcome: str | None
     outputs: dict[str, Any]
     time: float
-    failed: str | None = None  # the reason, when the agent failed (SPEC 15)
+    failed: str | None = None  # the reason, when the agent failed (docs/REFERENCE.md#agents-that-fail)
 
 
 class _NoClock:
@@ -172,6 +186,7 @@ class Agent:
         self.clock: Clock = _NO_CLOCK  # the engine's, once it runs
         self.root: Frame | None = None
         self.mailbox: list[Message] = []
+        self.radio = Radio("", (), top=True)  # outside every scope: set with the run's agents
         self.stats: dict[str, BehaviourStats] = {}
         self.entries = 0
         self.started = False
@@ -184,10 +199,18 @@ class Agent:
             return self.top
         return ", ".join("/".join(leaf.path()) for leaf in leaves(self.root))
 
-    def take_message(self, names: Any) -> Message | None:
-        """Remove and return the earliest message whose name is in `names`."""
+    def take_message(self, names: Any, prefix: str = "") -> Message | None:
+        """Remove and return the earliest message whose name is in `names`, sent under the scope
+        whose names begin with `prefix`: `scope/name`, or a bare name outside every scope."""
+        if not prefix:
+            for i, message in enumerate(self.mailbox):
+                if message.name in names:
+                    return self.mailbox.pop(i)
+            return None
+        n = len(prefix)
         for i, message in enumerate(self.mailbox):
-            if message.name in names:
+            name = message.name
+            if name.startswith(prefix) and name[n:] in names:
                 return self.mailbox.pop(i)
         return None
 

@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 from hfsm.expr import ExprValueError
-from hfsm.runtime.agent import Event, Frame, Region
+from hfsm.runtime.agent import HELD, Event, Frame, Region
 from hfsm.runtime.calls import Calls
 from hfsm.runtime.core import MAX_ENTRIES, FatalError
+from hfsm.runtime.scopes import open_scope, short
 from hfsm.runtime.states import RState
 
 
@@ -27,6 +28,8 @@ class Arcs(Calls):
                 return
             caller: Frame = up  # type: ignore[assignment]
             caller.below = None
+            if caller.held is not None:
+                return  # its state holds another arc: the callee's end is let go
             if caller.state.retry_on:
                 retried = self._retry(caller, ended)
                 if retried is None:
@@ -41,6 +44,8 @@ class Arcs(Calls):
         """Take arcs in `frame` until its state waits (None) or its machine ends (that ending)."""
         while True:
             state = frame.state
+            if state.autonomy and self._held(frame, state, event):
+                return None
             name = event.name
             target: RState | str | None
             if event.goto is None and event.message is None and name != "error":
@@ -76,7 +81,7 @@ class Arcs(Calls):
         if event.goto is not None:
             return event.goto
         if event.message is not None and event.name != "error":
-            return state.msg_arcs[event.name]
+            return state.msg_arcs[short(event.name)]
         if not event.origin:
             event.origin = "/".join(frame.path())
             self.emit(frame.agent, frame.path(), "error", message=event.error)
@@ -88,21 +93,24 @@ class Arcs(Calls):
         frame.entered = self.tick
         frame.state_deadline = None
         frame.attempt = 1
-        bad_timer = None if state.timer is None else self._start_timer(frame, state)
+        frame.inner = frame.radio
+        bad_timer = None if state.timer is None and state.scope is None else self._start_timer(frame, state)
         if self.records is not None:
             self.records.enter(frame, state)
         agent.entries += 1
         if agent.entries > MAX_ENTRIES:
             path = "/".join(frame.path())
-            raise FatalError(agent.name, f"{path}: more than {MAX_ENTRIES} state entries in one tick")
+            raise FatalError(
+                agent.name, f"{path}: more than {MAX_ENTRIES} state entries in one tick", origin=path
+            )
         if state.is_choice:
             return self._choose(frame, state)
         if bad_timer is not None:
             return bad_timer
         if agent.mailbox and state.msg_arcs:
-            message = agent.take_message(state.msg_arcs)
-            if message is not None:
-                return Event(message.name, message=message)
+            early = self._early_message(frame, state)
+            if early is not None:
+                return early
         if state.plain:
             return self._start_call(frame, state, frame)
         if state.watches:
@@ -116,13 +124,27 @@ class Arcs(Calls):
             return self._retry(frame, event)
         return event
 
+    def _early_message(self, frame: Frame, state: RState) -> Event | None:
+        """A message already in the mailbox that the state maps, as its event (HELD: held instead)."""
+        if state.autonomy and self._message_held(frame, state):
+            return HELD
+        message = frame.agent.take_message(state.msg_arcs, frame.radio.prefix)
+        return None if message is None else Event(message.name, message=message)
+
     def _start_timer(self, frame: Frame, state: RState) -> Event | None:
-        """The state's timer set (before its `enter` is written, which shows when it fires); or the
-        error its expression gave, taken once the state is entered."""
-        ticks = self._ticks(state.timer, frame)
-        if ticks.__class__ is Event:
-            return ticks
-        frame.state_deadline = self.tick + ticks  # type: ignore[operator]
+        """The state's timer set (before its `enter` is written, which shows when it fires), then its
+        `scope:` read (REFERENCE.md#scopes: what it runs is under it until the state is left); or the error
+        either gave, taken once the state is entered."""
+        if state.timer is not None:
+            ticks = self._ticks(state.timer, frame)
+            if ticks.__class__ is Event:
+                return ticks
+            frame.state_deadline = self.tick + ticks  # type: ignore[operator]
+        if state.scope is not None:
+            radio = open_scope(state.scope, frame.scope, frame.agent.name, frame.radio, self.team.order)
+            if isinstance(radio, str):
+                return Event("error", error=radio)
+            frame.inner = radio
         return None
 
     def _choose(self, frame: Frame, state: RState) -> Event:
@@ -139,7 +161,8 @@ class Arcs(Calls):
     def _watch(self, frame: Frame, state: RState) -> Event | None:
         """The first watch that holds, as the event that takes its arc (None: none holds).
 
-        A watch back to this state is passed over (SPEC 12): the state stays, and the watches after
+        A watch back to this state is passed over (docs/REFERENCE.md#watches): the state stays, and the
+        watches after
         it are tried, so a machine's watch into a state does not silence that state's own."""
         for watch in state.watches:
             try:

@@ -1,4 +1,5 @@
-"""The `barrier` built-in (SPEC 14): rounds per name, notices sent through the world, answers.
+"""The `barrier` built-in (docs/REFERENCE.md#barriers): rounds per name, notices sent through the world,
+answers.
 
 A notice (N, r) says "I am at barrier N, round r". Notices travel through the world like messages
 (its latency, its loss) but are the engine's own: they never enter a mailbox or the trace.
@@ -12,6 +13,8 @@ from typing import TYPE_CHECKING, Any, Protocol
 from hfsm.names import did_you_mean
 from hfsm.primitive import Message
 from hfsm.runtime.agent import Agent, Event, Frame, Region
+from hfsm.runtime.scopes import members as members_in
+from hfsm.runtime.scopes import radio_at
 from hfsm.world import NOTICE
 
 if TYPE_CHECKING:
@@ -67,7 +70,8 @@ class Team:
         return [a for a in barrier.members if heard.get((barrier.name, a), 0) >= barrier.round]
 
     def live(self) -> bool:
-        """Whether a waiting barrier can still pass: for 'blocked forever' (SPEC 10 and 14).
+        """Whether a waiting barrier can still pass: for 'blocked forever' (docs/REFERENCE.md#hfsm-run,
+        docs/REFERENCE.md#barriers).
 
         It can while it holds enough notices, or while a notice it lacks can still come: one in
         flight, one a partner sends while waiting in it, or a partner's answer to its next notice.
@@ -146,11 +150,22 @@ def start_barrier(
 ) -> Barrier | Event:
     name, named, at_least = params["name"], params["agents"], params["at_least"]
     team = host.team
+    radio = radio_at(where)
+    if not radio.top:  # docs/REFERENCE.md#scopes: the scope's agents, and the name qualified by the scope
+        chosen = members_in(radio, agent.name, named)
+        if isinstance(chosen, str):
+            return Event("error", error=f"barrier '{name}': {chosen}")
+        if at_least < 0 or at_least > len(chosen):
+            count = len(chosen)
+            problem = f"at_least is {at_least}, but it names {count} agent{'s' * (count != 1)}"
+            return Event("error", error=f"barrier '{name}': {problem}")
+        qualified = radio.qualify(name)
+        return Barrier(team, agent.name, qualified, chosen, at_least or len(chosen), host.tick)
     problem = _problem(list(team.order), agent.name, named, at_least)
     if problem:
         return Event("error", error=f"barrier '{name}': {problem}")
-    chosen = set(named) if named else {a for a in team.order if a != agent.name}
-    members = sorted(chosen, key=team.order.__getitem__)
+    chosen_all = set(named) if named else {a for a in team.order if a != agent.name}
+    members = sorted(chosen_all, key=team.order.__getitem__)
     return Barrier(team, agent.name, name, members, at_least or len(members), host.tick)
 
 

@@ -1,4 +1,4 @@
-"""The running code of the built-in behaviours (SPEC section 8)."""
+"""The running code of the built-in behaviours (docs/REFERENCE.md#built-in-behaviours)."""
 
 from __future__ import annotations
 
@@ -11,6 +11,7 @@ from hfsm.names import RESERVED_MESSAGES, is_name
 from hfsm.runtime.agent import Activity, Agent, Event, Frame, Region
 from hfsm.runtime.barrier import start_barrier
 from hfsm.runtime.host import Host
+from hfsm.runtime.scopes import radio_at
 
 DONE = Event("done")
 log = logging.getLogger("hfsm.log")
@@ -67,7 +68,7 @@ def start_wait(
 def start_wait_for(
     host: Host, agent: Agent, frame: Frame, params: dict[str, Any], where: Frame | Region
 ) -> WaitFor | Event:
-    activity = WaitFor(agent, params["message"])
+    activity = WaitFor(agent, radio_at(where).qualify(params["message"]))
     return activity.advance(host.tick) or activity
 
 

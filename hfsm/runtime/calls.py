@@ -11,7 +11,7 @@ from hfsm.runtime.cancel import Cancelling
 from hfsm.runtime.primitives import PrimitiveActivity, RunContext
 from hfsm.runtime.program import RMachine, resolve_params, timer_ticks
 from hfsm.runtime.states import Callee
-from hfsm.spec import is_finite_number
+from hfsm.spec import is_finite_number, shown
 
 
 class Calls(Cancelling):
@@ -28,14 +28,17 @@ class Calls(Cancelling):
         except ExprValueError as exc:
             return Event("error", error=f"{what}: {exc}")
         if not is_finite_number(seconds) or seconds < 0 or (seconds == 0 and not zero):
-            return Event("error", error=f"{what} must be {takes}, not {seconds!r}")
+            return Event("error", error=f"{what} must be {takes}, not {shown(seconds)}")
         return float(seconds)
 
     def _params(self, callee: Callee, frame: Frame) -> dict[str, Any] | Event:
+        frame.in_with = True  # `scope.*` in a `with` reads the state's own scope (docs/REFERENCE.md#scopes)
         try:
             given = {k: v.fn(frame.scope) for k, v in callee.with_.items()}
         except ExprValueError as exc:
             return Event("error", error=str(exc))
+        finally:
+            frame.in_with = False
         params = resolve_params(callee.spec, given)  # type: ignore[arg-type]
         return Event("error", error=params) if isinstance(params, str) else params
 
@@ -65,8 +68,12 @@ class Calls(Cancelling):
                 where.below = None
             return ended
         if kind == "primitive":
-            ctx = RunContext(self, agent, callee.do, where)
-            activity: Any = PrimitiveActivity(callee.callee, ctx, params, where)  # type: ignore[arg-type]
+            starts = getattr(callee.callee, "start_activity", None)  # a stand-in of hfsm-verify
+            if starts is not None:
+                activity: Any = starts(self, agent, params, where)
+            else:
+                ctx = RunContext(self, agent, callee.do, where)
+                activity = PrimitiveActivity(callee.callee, ctx, params, where)  # type: ignore[arg-type]
         else:
             activity = STARTERS[kind](self, agent, frame, params, where)  # type: ignore[arg-type]
             if activity.__class__ is Event:
@@ -105,7 +112,8 @@ class Calls(Cancelling):
         return Event(outcome, outputs)
 
     def _retry(self, frame: Frame, event: Event) -> Event | None:
-        """The callee of `frame`'s state ended with `event`: call it again (SPEC 13), or hand it on."""
+        """The callee of `frame`'s state ended with `event`: call it again (docs/REFERENCE.md#retries), or
+        hand it on."""
         state = frame.state
         while event.name in state.retry_on:
             times = self._count_of(state.retry_times, frame, "times")
@@ -137,7 +145,8 @@ class Calls(Cancelling):
         return event
 
     def _next_attempt(self, frame: Frame) -> None:
-        """`state.attempt` grows as the behaviour is called again (SPEC 13), not during the delay."""
+        """`state.attempt` grows as the behaviour is called again (docs/REFERENCE.md#retries), not during the
+        delay."""
         frame.attempt += 1
         if frame.state.watches:
             self.wake = True  # the watches read it next in the following tick: not to be skipped

@@ -9,10 +9,12 @@ from __future__ import annotations
 
 from typing import Any
 
+from hfsm.autonomy import FULL
 from hfsm.runtime.agent import Agent, AgentResult, Event, Frame, Region
 from hfsm.runtime.barrier import Team
 from hfsm.runtime.program import span_ticks
 from hfsm.runtime.records import records_for
+from hfsm.runtime.scopes import Radio
 from hfsm.runtime.states import RState
 from hfsm.trace import TraceSink
 from hfsm.world import World
@@ -23,10 +25,11 @@ MAX_ENTRIES = 1000
 class FatalError(Exception):
     """Ends the whole run at once (exit 1): an error at the top, too many entries in one tick."""
 
-    def __init__(self, agent: str, message: str, traceback: str = "") -> None:
+    def __init__(self, agent: str, message: str, traceback: str = "", origin: str = "") -> None:
         super().__init__(message)
         self.agent = agent
         self.traceback = traceback
+        self.origin = origin  # the path of the state (or region) where it happened, when known
 
 
 class Core:
@@ -35,6 +38,8 @@ class Core:
         for agent in agents:
             agent.clock = self
         self.by_name = {a.name: a for a in agents}
+        for agent in agents:
+            agent.radio = Radio("", tuple(a.name for a in agents if a is not agent), top=True)
         self.world: World = world
         self.dt = dt
         self.trace = trace
@@ -43,8 +48,11 @@ class Core:
         self._time = (0, 0.0)  # (tick, seconds) of the last time asked for
         self.running = len(agents)  # agents whose top machine has not ended
         self.spans: dict[float, int] = {}  # seconds -> ticks, for spans seen before
-        self.team = Team(self)  # barriers (SPEC 14)
+        self.team = Team(self)  # barriers (docs/REFERENCE.md#barriers)
         self.wake = False  # vars changed after a state's watches were tried: its next tick is due
+        self.level = FULL  # the run's autonomy level
+        self.approved: Event | None = None  # the event the operator answered: taken, not held again
+        self.breaks: Any = None  # the breakpoints' sink (runtime.breaks.Breaks), when there are any
 
     @property
     def time(self) -> float:
@@ -98,7 +106,7 @@ class Core:
             agent.result = AgentResult(None, {}, self.time)
             self.emit(agent, [agent.top], "exit", outcome=None)
             origin = event.origin or agent.top
-            raise FatalError(agent.name, f"{origin}: {event.error}", event.traceback)
+            raise FatalError(agent.name, f"{origin}: {event.error}", event.traceback, origin)
         agent.result = AgentResult(event.name, event.outputs or {}, self.time)
         self.emit(agent, [agent.top], "exit", outcome=event.name)
 
@@ -108,6 +116,12 @@ class Core:
         raise NotImplementedError
 
     def _enter(self, frame: Frame, state: RState) -> Event | None:
+        raise NotImplementedError
+
+    def _held(self, frame: Frame, state: RState, event: Event) -> bool:
+        raise NotImplementedError
+
+    def _message_held(self, frame: Frame, state: RState) -> bool:
         raise NotImplementedError
 
     def _start_regions(self, frame: Frame) -> Event | None:

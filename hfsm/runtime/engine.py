@@ -1,4 +1,5 @@
-"""What one agent does in one tick (SPEC 5, 11, 12), and the messages between agents.
+"""What one agent does in one tick (docs/REFERENCE.md#time-and-timers, docs/REFERENCE.md#parallel-states,
+docs/REFERENCE.md#watches), and the messages between agents.
 
 Within a tick, for each agent, from the outermost machine inwards: at each level the machine's
 timer, the state's timer, the earliest mapped message, the state's watches, a retry whose delay
@@ -13,15 +14,17 @@ from typing import Any
 from hfsm.primitive import Message
 from hfsm.runtime.agent import Agent, Event, Frame, Region, leaves
 from hfsm.runtime.core import FatalError
-from hfsm.runtime.parallel import Parallel
+from hfsm.runtime.holds import Holds
 from hfsm.runtime.program import RMachine
+from hfsm.runtime.scopes import radio_at
+from hfsm.runtime.scopes import targets as scoped_targets
 from hfsm.runtime.states import RState
 from hfsm.world import NOTICE
 
 __all__ = ["Engine", "FatalError"]
 
 
-class Engine(Parallel):
+class Engine(Holds):
     def start(self, agent: Agent, top: RMachine, params: dict[str, Any]) -> None:
         agent.started = True
         self.emit(agent, [agent.top], "enter")
@@ -37,11 +40,10 @@ class Engine(Parallel):
             if frame.deadline == k:
                 self._machine_timeout(frame)
                 return
-            if frame.state_deadline == k:
-                self.emit(frame.agent, frame.path(), "timeout", timer="state")
-                self._settle(frame, self._cancelled(frame, "timeout", Event("timeout")))
-                return
             state = frame.state
+            if frame.state_deadline == k:
+                self._state_timeout(frame)
+                return
             if frame.agent.mailbox and state.msg_arcs and self._message_arc(frame, state):
                 return
             if state.stepped and self._watched(frame, k):
@@ -59,15 +61,27 @@ class Engine(Parallel):
                     frame.below = None
                     if state.retry_on:
                         self._after_call(frame, ended)
-                    else:  # _settle's work, without its call
+                    else:  # _settle's work, without its call (a held state lets the end go: _held)
                         ended = self._run(frame, ended)
                         if ended is not None:
                             self._pass_up(frame, ended)
             return
 
+    def _state_timeout(self, frame: Frame) -> None:
+        """The state's timer fired: its `timeout` arc taken, or held."""
+        if frame.state.autonomy and self._timer_held(frame):
+            return
+        self.emit(frame.agent, frame.path(), "timeout", timer="state")
+        self._settle(frame, self._cancelled(frame, "timeout", Event("timeout")))
+
     def _message_arc(self, frame: Frame, state: RState) -> bool:
-        """The earliest message the state maps takes its arc: whether one did."""
-        message = frame.agent.take_message(state.msg_arcs)
+        """The earliest message the state maps takes its arc (or is held): whether one did. A state
+        that holds an arc looks at no message."""
+        if frame.held is not None:
+            return False
+        if state.autonomy and self._message_held(frame, state):
+            return True
+        message = frame.agent.take_message(state.msg_arcs, frame.radio.prefix)
         if message is None:
             return False
         event = Event(message.name, message=message)
@@ -75,7 +89,10 @@ class Engine(Parallel):
         return True
 
     def _watched(self, frame: Frame, k: int) -> bool:
-        """The state's watches, then the end of a retry's delay: whether either acted."""
+        """The state's watches, then the end of a retry's delay: whether either acted (neither, while
+        the state holds an arc)."""
+        if frame.held is not None:
+            return False
         state = frame.state
         if state.watches:
             event = self._watch(frame, state)
@@ -90,6 +107,8 @@ class Engine(Parallel):
         return False
 
     def _after_call(self, frame: Frame, event: Event | None) -> None:
+        if frame.held is not None:
+            return  # its state holds another arc: the callee's end is let go
         if event is not None and frame.state.retry_on:
             event = self._retry(frame, event)
         if event is not None:
@@ -107,8 +126,15 @@ class Engine(Parallel):
     # --- messages ------------------------------------------------------------------------------
 
     def send(self, agent: Agent, where: Frame | Region, name: str, to: str, data: dict[str, Any]) -> str:
-        """Post a message; return a problem as text, or ''."""
-        if to == "others":
+        """Post a message, its name qualified by the scope it is sent under; a problem as text, or ''."""
+        radio = radio_at(where)
+        if not radio.top:
+            chosen = scoped_targets(radio, agent.name, to)
+            if isinstance(chosen, str):
+                return chosen
+            targets = chosen
+            name = radio.prefix + name
+        elif to == "others":
             targets = [a.name for a in self.agents if a is not agent]
         elif to == "all":
             targets = [a.name for a in self.agents]

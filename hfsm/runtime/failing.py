@@ -1,4 +1,5 @@
-"""Agents that fail (SPEC 15): the world or `--fail` stops an agent at the start of a tick.
+"""Agents that fail (docs/REFERENCE.md#agents-that-fail): the world or `--fail` stops an agent at the start
+of a tick.
 
 From that tick on the agent acts no more: what it runs is cancelled (it cleans up), it sends
 nothing, messages and notices to it are lost, and the trace writes one `failed` record.

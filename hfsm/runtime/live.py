@@ -45,7 +45,7 @@ class Inputs:
 
 
 def seconds(ticks: int, dt: float) -> float:
-    """A count of ticks as seconds, rounded to 9 places: 6 * 0.05 is 0.3 (SPEC 12)."""
+    """A count of ticks as seconds, rounded to 9 places: 6 * 0.05 is 0.3 (docs/REFERENCE.md#watches)."""
     return round(ticks * dt, 9)
 
 
@@ -72,3 +72,11 @@ class FrameLive:
 
     def input(self, name: str) -> Any:
         return self.inputs.read(name, self.clock.tick)
+
+    def scope_name(self) -> str:
+        frame = self.frame
+        return str((frame.inner if frame.in_with else frame.radio).name)
+
+    def scope_agents(self) -> list[str]:
+        frame = self.frame
+        return list((frame.inner if frame.in_with else frame.radio).agents)

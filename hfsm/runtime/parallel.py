@@ -1,4 +1,5 @@
-"""Parallel states (SPEC 11): regions started in order, stepped in order, joined by the first rule."""
+"""Parallel states (docs/REFERENCE.md#parallel-states): regions started in order, stepped in order, joined by
+the first rule."""
 
 from __future__ import annotations
 
@@ -40,10 +41,10 @@ class Parallel(Arcs):
                     self._region_ended(region, event)
             if region.result is not None:
                 ended = True
-                if region.result.name == "error":
+                if region.result.name == "error" and frame.held is None:
                     self._settle(frame, self._region_failed(frame, region.result))
                     return
-        if ended:
+        if ended and frame.held is None:
             event = self._join(frame, regions)
             if event is not None:
                 self._settle(frame, event)

@@ -15,6 +15,7 @@ from hfsm.primitive import Cancelled, Message, Outcome, Primitive
 from hfsm.runtime.agent import Agent, Event, Frame, Region
 from hfsm.runtime.host import Host
 from hfsm.runtime.program import span_ticks
+from hfsm.runtime.scopes import radio_at
 
 _KEPT_WAITING = object()  # what a cancelled primitive hands back when it waits again
 
@@ -65,8 +66,12 @@ class RunContext:
             self.wait()
         return True
 
+    @property
+    def scope(self) -> str:
+        return radio_at(self._where).name
+
     def receive(self, name: str) -> Message | None:
-        return self._agent.take_message((name,))
+        return self._agent.take_message((name,), radio_at(self._where).prefix)
 
     def send(self, message: str, to: str = "others", **data: Any) -> None:
         self._host.send(self._agent, self._where, message, to, data)

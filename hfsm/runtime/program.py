@@ -6,6 +6,7 @@ import math
 from collections.abc import Callable, Mapping
 from typing import Any
 
+from hfsm.autonomy import join_key, level_of
 from hfsm.builtins import BUILTINS
 from hfsm.checks.context import machine_spec
 from hfsm.expr import TIMED, Fn, Names, compile_expr, reads
@@ -13,9 +14,10 @@ from hfsm.library import MachineFile
 from hfsm.model import CallState, ChoiceState, IfBranch, JoinRule, Machine, ParallelState, Region, Retry
 from hfsm.model import Watch as WatchModel
 from hfsm.registry import Registry
+from hfsm.runtime.scopes import ScopeCode
 from hfsm.runtime.states import Callee, RMachine, RRegion, RState, Watch
 from hfsm.runtime.states import JoinRule as RJoin
-from hfsm.spec import BehaviourSpec, coerce, is_finite_number, type_ok
+from hfsm.spec import BehaviourSpec, coerce, is_finite_number, shown, type_ok
 from hfsm.values import compile_value
 
 __all__ = ["Program", "RMachine", "RState", "machine_params", "resolve_params", "span_ticks", "timer_ticks"]
@@ -24,7 +26,7 @@ Resolve = Callable[[str], "RState | str"]
 
 
 def span_ticks(seconds: float, dt: float) -> int:
-    """Ticks from the tick a span begins to the tick it ends in (SPEC section 5)."""
+    """Ticks from the tick a span begins to the tick it ends in (docs/REFERENCE.md#time-and-timers)."""
     return math.ceil(seconds / dt - 1e-9)
 
 
@@ -42,7 +44,7 @@ def resolve_params(spec: BehaviourSpec, given: Mapping[str, Any]) -> dict[str, A
         if name in given:
             value = given[name]
             if not type_ok(value, param.type):
-                return f"param '{name}' of '{spec.name}' takes {param.type}, not {value!r}"
+                return f"param '{name}' of '{spec.name}' takes {param.type}, not {shown(value)}"
             params[name] = coerce(value, param.type)
         elif not param.required:
             params[name] = param.default
@@ -104,6 +106,10 @@ class Program:
             self._arcs(rs, state.on, target, any_msgs, receives)
             rs.timer = self._timer(state.timer, names)
             self._watches(rs, [*m.watch, *state.watch], names, target)
+            if state.scope is not None:
+                rs.scope = ScopeCode(
+                    compile_value(state.scope.name, names), compile_value(state.scope.agents, names)
+                )
             if isinstance(state, CallState):
                 self._callee(rs, state, names)
                 rs.save = tuple(state.save.items())
@@ -113,6 +119,7 @@ class Program:
             else:
                 self._parallel(rs, state, names, target)
             rs.stepped = bool(rs.watches or rs.retry_on)
+            rs.autonomy = {event: level_of(level) for event, level in state.autonomy.items()}
 
     def _callee(self, callee: Callee, call: CallState | Region, names: Names) -> None:
         callee.do = call.do
@@ -188,4 +195,5 @@ class Program:
                 rules.append(RJoin(when, target(rule.then), text))
             else:
                 rules.append(RJoin((), target(rule.else_), "else"))
+            rs.join_keys[rules[-1].text] = join_key(rule.then if isinstance(rule, JoinRule) else rule.else_)
         rs.join = tuple(rules)

@@ -1,4 +1,5 @@
-"""The trace records a running engine writes (SPEC 10): as dicts for any sink, or as JSON text.
+"""The trace records a running engine writes (docs/REFERENCE.md#the-trace): as dicts for any sink, or as JSON
+text.
 
 `Records` builds every record as a dict and hands it to the sink's `write`. `TextRecords` serves a
 sink that also takes lines (`write_line`, such as `JsonlTrace`): the records written on every

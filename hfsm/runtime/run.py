@@ -2,15 +2,21 @@
 
 from __future__ import annotations
 
+import queue
 import sys
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+from hfsm.autonomy import FULL, Decision
 from hfsm.runtime.agent import Agent, AgentResult, BehaviourStats, Frame
+from hfsm.runtime.breaks import Breakpoint, Breaks
 from hfsm.runtime.engine import Engine, FatalError
 from hfsm.runtime.failing import Failure, Failures, all_failed
+from hfsm.runtime.holds import hold_text
+from hfsm.runtime.operator import Operator
 from hfsm.runtime.program import Program, RMachine, span_ticks
+from hfsm.runtime.scopes import run_under
 from hfsm.trace import TraceSink
 from hfsm.world import World
 
@@ -22,6 +28,8 @@ class RunResult:
     error: str | None = None
     traceback: str = ""
     stats: dict[str, dict[str, BehaviourStats]] = field(default_factory=dict)
+    error_agent: str = ""  # who met the error, and the path of the state where (when known)
+    error_origin: str = ""
 
     @property
     def exit_code(self) -> int:
@@ -37,6 +45,11 @@ class RunOptions:
     max_time: float = 3600.0
     failures: Sequence[Failure] = ()
     agent_params: Mapping[str, dict[str, Any]] = field(default_factory=dict)  # an agent's own params
+    autonomy: int = FULL  # the run's level at the start
+    decisions: Sequence[Decision] = ()  # the operator's, from a script or a trace
+    live: queue.Queue[Decision] | None = None  # the operator's, as a live page sends them
+    breaks: list[Breakpoint] = field(default_factory=list)  # records that pause the run (shared: a page adds)
+    scopes: Mapping[str, tuple[str, tuple[str, ...]]] = field(default_factory=dict)  # agent -> scope
 
 
 def run(program: Program, world: World, options: RunOptions, trace: TraceSink | None = None) -> RunResult:
@@ -44,9 +57,14 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
     world.start([a.name for a in agents], program.dt)
     for agent in agents:
         agent.robot = world.handle(agent.name)
-    engine = Engine(agents, world, program.dt, trace)
+    breaks = Breaks(options.breaks, trace) if options.breaks or options.live is not None else None
+    engine = Engine(agents, world, program.dt, breaks or trace)
+    engine.level = options.autonomy
+    engine.breaks = breaks
+    if options.scopes:
+        run_under(agents, options.scopes)
     try:
-        error, tb = _loop(engine, program, options, world)
+        error, tb, fatal = _loop(engine, program, options, world)
         if error:
             _stop_all(engine, agents)
     finally:
@@ -55,26 +73,34 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
     if not error and all_failed(agents):
         error = "every agent failed"
     results = {a.name: a.result or AgentResult(None, {}, engine.time) for a in agents}
-    return RunResult(results, engine.time, error, tb, {a.name: a.stats for a in agents})
+    stats = {a.name: a.stats for a in agents}
+    who, origin = (fatal.agent, fatal.origin) if fatal is not None else ("", "")
+    return RunResult(results, engine.time, error, tb, stats, who, origin)
 
 
-def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -> tuple[str | None, str]:
+def _loop(
+    engine: Engine, program: Program, options: RunOptions, world: World
+) -> tuple[str | None, str, FatalError | None]:
     agents = engine.agents
     last = span_ticks(options.max_time, program.dt)
     top = program.machines[options.top]
     failures = Failures(engine, options.failures)
+    operator = Operator(engine, options.decisions, options.live)
     world_records = getattr(world, "trace_records", None)  # a world may add records (robots' poses)
     try:
-        failures.apply(0)
-        _start(engine, top, options)
+        paused = _begin(engine, operator, failures, top, options)
+        if paused:
+            return "blocked forever: " + paused, "", None
         while engine.running:
-            following = _next_tick(engine, failures) if world.static else engine.tick + 1
+            following = _following(engine, failures, operator)
             if following is None or following > last:
-                return _stopped(engine, following, last, options.max_time), ""
+                return _stopped(engine, following, last, options.max_time), "", None
             if not world.static:
                 world.advance(engine.tick)
                 _world_records(engine, world_records, following)
             engine.tick = following
+            if operator.busy and (paused := _operator_first(operator, following)):
+                return "blocked forever: " + paused + "; " + _where(engine.agents), "", None
             if failures.due or not world.static:
                 failures.apply(following)
             arrived = world.collect(following)
@@ -87,8 +113,33 @@ def _loop(engine: Engine, program: Program, options: RunOptions, world: World) -
             if engine.records is not None:
                 engine.records.flush()
     except FatalError as exc:
-        return exc.args[0], exc.traceback
-    return None, ""
+        return exc.args[0], exc.traceback, exc
+    return None, "", None
+
+
+def _following(engine: Engine, failures: Failures, operator: Operator) -> int | None:
+    """The next tick to run: the next (a static world: the next in which anything can happen); while
+    paused, the next, whatever is due in it, since a step runs one tick."""
+    if operator.paused or not engine.world.static:
+        return engine.tick + 1
+    return _next_tick(engine, failures, operator if operator.busy else None)
+
+
+def _begin(engine: Engine, operator: Operator, failures: Failures, top: RMachine, options: RunOptions) -> str:
+    """Tick 0: the operator's decisions, failures, every agent's start; why it can never go on, or ''."""
+    paused = _operator_first(operator, 0)
+    if not paused:
+        failures.apply(0)
+        _start(engine, top, options)
+    return paused
+
+
+def _operator_first(operator: Operator, tick: int) -> str:
+    """The operator's decisions due at the start of `tick`; while paused, those that come until one
+    resumes or steps the run. Why the run can never go on, or ''."""
+    operator.ran()
+    operator.apply(tick)
+    return operator.hold_on(tick) if operator.paused else ""
 
 
 def _start(engine: Engine, top: RMachine, options: RunOptions) -> None:
@@ -105,7 +156,8 @@ def _start(engine: Engine, top: RMachine, options: RunOptions) -> None:
 def _stopped(engine: Engine, following: int | None, last: int, max_time: float) -> str:
     """Why a run stops before every agent ended: nothing can happen any more, or --max-time."""
     if following is None:
-        return "blocked forever: " + _where(engine.agents)
+        holds = "; ".join(filter(None, (hold_text(a) for a in engine.agents)))
+        return "blocked forever: " + _where(engine.agents) + (f"; held: {holds}" if holds else "")
     engine.tick = max(engine.tick, last)
     return f"stopped at --max-time {max_time:g} s: " + _where(engine.agents)
 
@@ -119,10 +171,11 @@ def _world_records(engine: Engine, records: WorldRecords | None, tick: int) -> N
             engine.records.put(record)
 
 
-def _next_tick(engine: Engine, failures: Failures) -> int | None:
+def _next_tick(engine: Engine, failures: Failures, operator: Operator | None) -> int | None:
     """In a static world, the next tick in which anything can happen; None when nothing can."""
     now = engine.tick
-    if engine.wake or (engine.team.waiting and engine.team.live()):
+    hit = operator is not None and operator.hit()
+    if engine.wake or (engine.team.waiting and engine.team.live()) or hit:
         engine.wake = False
         return now + 1
     best = engine.world.next_delivery() or sys.maxsize
@@ -131,7 +184,8 @@ def _next_tick(engine: Engine, failures: Failures) -> int | None:
             continue
         root = agent.root
         below = root.below
-        if below.__class__ is Frame or below.__class__ is list or below is None or root.state.timed:
+        if below.__class__ is Frame or below.__class__ is list or below is None or root.state.timed \
+                or root.held is not None:
             best = _wake(root, now, best)
         else:  # one machine running one behaviour: the common case, without a call
             for deadline in (root.deadline, root.state_deadline, root.retry_at, below.deadline):
@@ -139,7 +193,13 @@ def _next_tick(engine: Engine, failures: Failures) -> int | None:
                     best = deadline
         if best == now + 1:
             break
+    decided = operator.next_due() if operator is not None else None
+    if decided is not None and decided < best:
+        best = max(decided, now + 1)  # the operator may answer what waits
     if best == sys.maxsize:
+        if operator is not None and operator.live is not None:
+            operator.wait_live()  # nothing else can happen: the live operator's answer comes next
+            return now + 1
         return None  # a failure to come is no agent advancing: blocked forever now
     if failures.due:
         best = min(best, failures.due[0][0])
@@ -149,7 +209,7 @@ def _next_tick(engine: Engine, failures: Failures) -> int | None:
 def _wake(frame: Frame, now: int, best: int) -> int:
     """The earliest tick after `now`, and before `best`, in which something at or below `frame` is due."""
     while True:
-        if frame.state.timed:
+        if frame.state.timed and frame.held is None:
             return now + 1
         for deadline in (frame.deadline, frame.state_deadline, frame.retry_at):
             if deadline is not None and now < deadline < best:

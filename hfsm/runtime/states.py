@@ -28,7 +28,7 @@ class Callee:
 
 
 class RRegion(Callee):
-    """One region of a parallel state (SPEC 11)."""
+    """One region of a parallel state (docs/REFERENCE.md#parallel-states)."""
 
     __slots__ = ("background", "index", "name")
 
@@ -63,12 +63,14 @@ class Watch:
 class RState(Callee):
     __slots__ = (
         "arcs",
+        "autonomy",
         "awaited",
         "branches",
         "error_target",
         "is_choice",
         "is_parallel",
         "join",
+        "join_keys",
         "machine",
         "msg_arcs",
         "name",
@@ -77,6 +79,7 @@ class RState(Callee):
         "retry_delay",
         "retry_on",
         "retry_times",
+        "scope",
         "stepped",
         "timed",
         "timer",
@@ -104,6 +107,9 @@ class RState(Callee):
         self.join: tuple[JoinRule, ...] = ()
         self.plain = False  # a call state without watches or retry: entered the quick way
         self.stepped = False  # it has watches or a retry: its own level does more in each tick
+        self.autonomy: dict[str, int] = {}  # event (or `join:TARGET`) -> the level its arc needs
+        self.join_keys: dict[str, str] = {}  # a join rule's event name -> its `join:TARGET`
+        self.scope: Any = None  # a `scope:` (docs/REFERENCE.md#scopes): a runtime.scopes.ScopeCode
 
 
 class RMachine:

@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from hfsm import located
+from hfsm.autonomy import Decision, decision_of, decision_problems
 from hfsm.builtins import BUILTINS
 from hfsm.checks.context import machine_spec
 from hfsm.cli.quiet import stdout_to_stderr
@@ -19,7 +20,7 @@ from hfsm.spec import BehaviourSpec
 from hfsm.testing.calls import callees, reachable
 from hfsm.testing.check_expect import check_expect
 from hfsm.testing.check_team import team_params, team_partners
-from hfsm.testing.model import ByAgent, Case, FailAt, StandIn, Step, TestFile
+from hfsm.testing.model import ByAgent, Case, Expect, FailAt, StandIn, Step, TestFile
 from hfsm.testing.plan import CasePlan, StandInPlan
 from hfsm.yamlio import Document, Path_, read_mapping
 
@@ -34,8 +35,9 @@ def full_registry() -> Registry:
         return Registry.discover()
 
 
-def read_test_file(path: Path, registry: Registry | None = None) -> list[CasePlan]:
-    doc = read_mapping(shown(path), "a behaviour test")
+def read_test_file(path: Path, registry: Registry | None = None, text: str | None = None) -> list[CasePlan]:
+    """Every case of the file, checked (`text`: the file's text, when not the disk's)."""
+    doc = read_mapping(shown(path), "a behaviour test", text=text)
     model = located.validate(TestFile, doc)
     checker = _FileChecker(path, doc, model, registry or full_registry())
     plans = [checker.case(name, case) for name, case in model.tests.items()]
@@ -86,7 +88,11 @@ class _FileChecker:
         stand_ins = self._stand_ins(loaded, case, at, set(agents))
         pruned = self._world_free(loaded, top.name, stand_ins, machine_at)
         inputs, messages, fail = self._script(case, at, set(agents))
-        expect = check_expect(self, loaded, stand_ins, case.expect, (*at, "expect"), set(agents))
+        decisions = self._decisions(case, at, list(agents))
+        if (case.expect is None) == (case.verify is None):
+            self.error(at, "T330", "a case needs `expect` (one run) or `verify` (every run)", key=True)
+        given = case.expect or Expect()
+        expect = check_expect(self, loaded, stand_ins, given, (*at, "expect"), set(agents))
         if len(self.findings) > before:
             return None
         return CasePlan(
@@ -108,9 +114,13 @@ class _FileChecker:
             messages=messages,
             fail=fail,
             partners=partners,
+            autonomy=self._pick(case, "autonomy", at)[0] or "full",
+            decisions=decisions,
             expect=expect,
             expect_path=(*at, "expect"),
             pruned=pruned,
+            verify=case.verify,
+            scopes=self._scopes(case, at),
         )
 
     # --- the machine and its params ------------------------------------------------------------
@@ -239,6 +249,15 @@ class _FileChecker:
             )  # fmt: skip
         return set(models) - run
 
+    def _scopes(self, case: Case, at: Path_) -> dict[str, tuple[str, tuple[str, ...]]]:
+        """Each agent's scope: the first of `scopes` that lists it."""
+        scopes, _ = self._pick(case, "scopes", at)
+        given: dict[str, tuple[str, tuple[str, ...]]] = {}
+        for scope in scopes or []:
+            for agent in scope.agents:
+                given.setdefault(agent, (scope.name, tuple(scope.agents)))
+        return given
+
     # --- scripted inputs and messages ----------------------------------------------------------
 
     def _known_agent(self, at: Path_, name: str | None, agents: set[str]) -> None:
@@ -259,6 +278,19 @@ class _FileChecker:
             [(m, (*messages_at, i)) for i, m in enumerate(messages or [])],
             list(fail or []),
         )
+
+    def _decisions(self, case: Case, at: Path_, agents: list[str]) -> list[Decision]:
+        """The operator's records, each checked as `--operator` checks them (T315)."""
+        records, records_at = self._pick(case, "operator", at)
+        decisions = []
+        for i, record in enumerate(records or []):
+            item = record.model_dump(exclude_none=True)
+            problems = decision_problems(item, agents)
+            for key, message in problems:
+                self.error((*records_at, i, key), "T315", message)
+            if not problems:
+                decisions.append(decision_of(item))
+        return decisions
 
 
 TEST_SUFFIXES = (".test.yaml", ".test.yml")

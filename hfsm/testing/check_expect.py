@@ -63,6 +63,10 @@ def _agent(
             problem = path_problem(models, top, set(stand_ins), path)
             if problem:
                 out.error((*at, *key.split("/"), i), "T322", problem)
+    for i, held in enumerate(expect.held or []):
+        problem = path_problem(models, top, set(stand_ins), held.state)
+        if problem:
+            out.error((*at, "held", i, "state"), "T322", problem)
     counted = [("calls", n) for n in expect.calls or {}] + [
         ("called_with", n) for n in expect.called_with or {}
     ]

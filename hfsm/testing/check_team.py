@@ -7,7 +7,7 @@ from typing import Any, Protocol
 
 from hfsm.model import Machine
 from hfsm.names import did_you_mean
-from hfsm.spec import coerce, type_ok
+from hfsm.spec import coerce, shown, type_ok
 from hfsm.testing.model import Case, PartnerAt, TestFile
 from hfsm.yamlio import Path_
 
@@ -69,7 +69,7 @@ def _typed(
             )
             checker.error(where, "T303", f"'{top}' has no param '{key}'{hint}", key=True)
         elif not type_ok(value, param.type):
-            checker.error(where, "T303", f"param '{key}' of '{top}' takes {param.type}, not {value!r}")
+            checker.error(where, "T303", f"param '{key}' of '{top}' takes {param.type}, not {shown(value)}")
         else:
             params[key] = coerce(value, param.type)
     for key, param in model.params.items():

@@ -8,12 +8,12 @@ from dataclasses import dataclass
 from typing import Any
 
 from hfsm.runtime.run import RunResult
-from hfsm.testing.model import AgentExpect, InOrderSends, InOrderStates, Sent, TimeRange
+from hfsm.testing.model import AgentExpect, Held, InOrderSends, InOrderStates, Sent, TimeRange
 from hfsm.testing.plan import CasePlan
 from hfsm.testing.standins import Calls
 from hfsm.yamlio import Path_
 
-FIELDS = ("failed", "outcome", "time", "outputs", "states", "never", "sends", "calls", "called_with")
+FIELDS = ("failed", "outcome", "time", "outputs", "states", "never", "held", "sends", "calls", "called_with")
 SHOWN = 40  # longest list of states or messages shown in a failure
 
 
@@ -167,6 +167,26 @@ class Comparison:
                     f"{agent}: expected never to enter {show(path)}; it entered it at t = {times[0]:g} s",
                 )
 
+    def _held(self, agent: str, expected: list[Held] | None, at: Path_) -> None:
+        got = [r for r in self.trace if r["kind"] == "held" and r["agent"] == agent]
+        shown = _list([f"{'/'.join(r['path'][1:])}:{r['event']}@{r['t']:g}" for r in got])
+        listed = expected or []
+        if len(got) != len(listed):
+            self.fail(at, f"{agent}: expected {len(listed)} held arcs; it held {len(got)}: {shown}")
+            return
+        for i, (want, record) in enumerate(zip(listed, got, strict=True)):
+            ok = "/".join(record["path"][1:]) == want.state and record["event"] == want.event
+            ok = (
+                ok
+                and want.level in (None, record["level"])
+                and (want.at is None or time_ok(want.at, record["t"]))
+            )
+            if not ok:
+                self.fail(
+                    (*at, i),
+                    f"{agent}: expected held arc {i + 1} at {want.state}: {want.event}; it held {shown}",
+                )
+
     def sent(self, agent: str) -> list[dict[str, Any]]:
         return [r for r in self.trace if r["kind"] == "send" and r["agent"] == agent]
 
@@ -244,7 +264,8 @@ def _list(items: list[str]) -> str:
 def _sent_matches(expected: str | Sent, record: dict[str, Any]) -> bool:
     if isinstance(expected, str):
         return bool(record["message"] == expected)
-    if record["message"] != expected.message or (expected.to is not None and record["to"] != expected.to):
+    qualified = f"{expected.scope}/{expected.message}" if expected.scope else expected.message
+    if record["message"] != qualified or (expected.to is not None and record["to"] != expected.to):
         return False
     data = record.get("data") or {}
     if expected.data is not None and any(
@@ -262,7 +283,7 @@ def _sent_text(record: dict[str, Any]) -> str:
 def _expected_text(item: str | Sent) -> str:
     if isinstance(item, str):
         return item
-    parts = [item.message]
+    parts = [f"{item.scope}/{item.message}" if item.scope else item.message]
     if item.to is not None:
         parts.append(f"to {item.to}")
     if item.data is not None:

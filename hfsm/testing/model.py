@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 from pydantic import ConfigDict, Discriminator, Field, StringConstraints, Tag
 
 from hfsm.model import Name, Strict
+from hfsm.names import NAME_PATTERN
+
+ScopeName = Annotated[str, StringConstraints(pattern=rf"^{NAME_PATTERN[1:-1]}(/{NAME_PATTERN[1:-1]})*$")]
 
 Seconds = Annotated[float, Field(ge=0, allow_inf_nan=False)]
 StatePath = Annotated[str, StringConstraints(pattern=r"^[a-z][a-z0-9_]*(/[a-z][a-z0-9_]*)*$")]
@@ -51,17 +54,26 @@ class InputsAt(Strict):
 
 
 class MessageIn(Strict):
-    """A message that enters the mailboxes at time `at`, as if sent by agent `from` (SPEC 6)."""
+    """A message that enters the mailboxes at time `at`, as if sent by agent `from`
+    (docs/REFERENCE.md#messages-between-agents)."""
 
     at: Seconds = 0
     from_: Name = Field(alias="from", description="the sender: any name, in the run or not")
     message: Name
     to: Name | None = Field(default=None, description="absent: every agent of the test but the sender")
     data: dict[str, Any] = Field(default_factory=dict)
+    scope: ScopeName | None = Field(
+        default=None, description="sent under this scope, qualified: `pair_a` or `room/pair_a`"
+    )
+
+    @property
+    def qualified(self) -> str:
+        return f"{self.scope}/{self.message}" if self.scope else self.message
 
 
 class FailAt(Strict):
-    """An agent that fails at time `at` (SPEC 15): it acts no more, sends nothing, hears nothing."""
+    """An agent that fails at time `at` (docs/REFERENCE.md#agents-that-fail): it acts no more, sends nothing,
+    hears nothing."""
 
     agent: Name
     at: Seconds
@@ -69,12 +81,30 @@ class FailAt(Strict):
 
 
 class PartnerAt(Strict):
-    """A scripted team mate outside the test that arrives at barrier `barrier` at time `at` (SPEC 14):
+    """A scripted team mate outside the test that arrives at barrier `barrier` at time `at`
+    (docs/REFERENCE.md#barriers):
     from then on it sends its notice to every agent of the test, as an agent waiting there does."""
 
     agent: Name = Field(description="its name: not an agent of the test")
-    barrier: str = Field(min_length=1, description="the barrier's name")
+    barrier: str | None = Field(
+        default=None, min_length=1, description="the barrier's name (none: a team mate that never arrives)"
+    )
     at: Seconds = 0
+
+
+Level = Literal["off", "low", "high", "full"]
+
+
+class OperatorAt(Strict):
+    """A decision of the operator, as a record of `hfsm-run --operator FILE`."""
+
+    t: Seconds = Field(
+        description="when it takes effect: at the start of the tick a span of t s from tick 0 ends in"
+    )
+    agent: Name | None = Field(default=None, description="the agent answered (accept, force)")
+    do: Literal["accept", "force", "autonomy", "pause", "resume", "step"]
+    event: str | None = Field(default=None, description="force: the event taken; accept: the event held")
+    level: Level | None = Field(default=None, description="autonomy: the run's new level")
 
 
 class TimeRange(Strict):
@@ -87,12 +117,22 @@ Time = Seconds | TimeRange
 
 class Sent(Strict):
     message: Name
+    scope: ScopeName | None = Field(default=None, description="sent under this scope, qualified")
     to: Name | None = None
     data: dict[str, Any] | None = Field(default=None, description="these fields, with these values")
     at: Time | None = None
 
 
 SentItem = Name | Sent
+
+
+class Held(Strict):
+    """An arc held for the operator: the state that held it, its event, the level it needed, when."""
+
+    state: StatePath
+    event: str = Field(description="an event of the state, `join:TARGET`, or a message")
+    level: Level | None = None
+    at: Time | None = None
 
 
 class InOrderStates(Strict):
@@ -105,13 +145,15 @@ class InOrderSends(Strict):
 
 class AgentExpect(Strict):
     outcome: Name | None = Field(default=None, description="null: the agent did not end")
-    failed: bool | None = Field(default=None, description="whether the agent failed (SPEC 15)")
+    failed: bool | None = Field(
+        default=None, description="whether the agent failed (docs/REFERENCE.md#agents-that-fail)")
     time: Time | None = Field(default=None, description="when its top machine ended (s)")
     outputs: dict[str, Any] | None = Field(default=None, description="these outputs, with these values")
     states: list[StatePath] | InOrderStates | None = Field(
         default=None, description="a list: exactly these, at their depths; in_order: a subsequence"
     )
     never: list[StatePath] | None = Field(default=None, description="states never entered")
+    held: list[Held] | None = Field(default=None, description="exactly these arcs were held, in order")
     sends: list[SentItem] | InOrderSends | None = Field(
         default=None, description="a list: exactly these messages; in_order: a subsequence"
     )
@@ -128,6 +170,14 @@ class Expect(AgentExpect):
 
     error: str | None = Field(default=None, description="the run ends in an error containing this text")
     agents: dict[Name, AgentExpect] = Field(default_factory=dict)
+
+
+class ScopeIn(Strict):
+    """A scope the machine under test runs under, for the agents it lists, as if a caller's state
+    had `scope:` (docs/REFERENCE.md#scopes)."""
+
+    name: ScopeName = Field(description="its qualified name: `pair_t1`, or `room/pair_t1` for a nested one")
+    agents: list[Name] = Field(min_length=1, description="its agents; each runs under it, leaving itself out")
 
 
 class Setup(Strict):
@@ -150,11 +200,30 @@ class Setup(Strict):
     partners: list[PartnerAt] | None = Field(
         default=None, description="scripted team mates that arrive at barriers (each entry one round)"
     )
+    scopes: list[ScopeIn] | None = Field(
+        default=None, description="teams: each agent runs the machine under the scope that lists it"
+    )
+    autonomy: Level | None = Field(default=None, description="the run's autonomy level (default full)")
+    operator: list[OperatorAt] | None = Field(default=None, description="the operator's decisions")
+
+
+class VerifyCase(Strict):
+    """Every run the world's choices allow (hfsm-verify), instead of one scripted run."""
+
+    loss: Annotated[int, Field(ge=0)] = Field(default=0, description="messages or notices a run may lose")
+    delay: Annotated[int, Field(ge=0)] = Field(default=0, description="ticks each may come late")
+    fail: Annotated[int, Field(ge=0)] = Field(default=0, description="agents that may fail, at any tick")
+    goal: Literal["success"] | None = Field(default=None, description="no agent that lives ends in a failure")
+    bound: Annotated[float, Field(gt=0, allow_inf_nan=False)] | None = Field(
+        default=None, description="run time explored (s); default: the top timer, else 600"
+    )
+    max_states: Annotated[int, Field(gt=0)] = Field(default=200_000, description="not proved past this")
 
 
 class Case(Setup):
     doc: str | None = None
-    expect: Expect
+    expect: Expect | None = Field(default=None, description="what the run does (or give `verify`)")
+    verify: VerifyCase | None = Field(default=None, description="prove the machine instead of one run")
 
 
 class TestFile(Setup):

@@ -1,4 +1,5 @@
-"""Scripted barrier partners of a behaviour test (SPEC 14): team mates that are no agents of the run.
+"""Scripted barrier partners of a behaviour test (docs/REFERENCE.md#barriers): team mates that are no agents
+of the run.
 
 A partner that arrives at barrier N at time S sends its notice (N, its round) to every agent of the
 test in every tick from then on. In a lossless world this is what an agent that waits there and
@@ -24,6 +25,8 @@ class ScriptedPartners:
         counts: dict[tuple[str, str], int] = {}
         self._arrivals: list[tuple[int, str, str, int]] = []
         for p in sorted(partners, key=lambda p: p.at):
+            if p.barrier is None:
+                continue  # a team mate a scope or a barrier may name, that never arrives anywhere
             counts[p.agent, p.barrier] = counts.get((p.agent, p.barrier), 0) + 1
             self._arrivals.append((span_ticks(p.at, dt), p.agent, p.barrier, counts[p.agent, p.barrier]))
         self._last = counts

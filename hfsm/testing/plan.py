@@ -5,10 +5,11 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
+from hfsm.autonomy import Decision
 from hfsm.load import Loaded
 from hfsm.registry import Registry
 from hfsm.spec import BehaviourSpec
-from hfsm.testing.model import Expect, FailAt, InputsAt, MessageIn, PartnerAt, Step
+from hfsm.testing.model import Expect, FailAt, InputsAt, MessageIn, PartnerAt, Step, VerifyCase
 from hfsm.yamlio import Document, Path_
 
 
@@ -43,9 +44,13 @@ class CasePlan:
     messages: list[tuple[MessageIn, Path_]]
     fail: list[FailAt]
     partners: list[PartnerAt]
+    autonomy: str
+    decisions: list[Decision]
     expect: Expect
     expect_path: Path_
     pruned: set[str] = field(default_factory=set)  # machines not run: only stand-ins call them
+    verify: VerifyCase | None = None  # every run the world's choices allow, instead of one
+    scopes: dict[str, tuple[str, tuple[str, ...]]] = field(default_factory=dict)  # agent -> its scope
 
     @property
     def line(self) -> int:

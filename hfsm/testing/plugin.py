@@ -42,6 +42,8 @@ class BehaviourCase(pytest.Item):
     def __init__(self, *, plan: CasePlan, **kwargs: Any) -> None:
         super().__init__(**kwargs)
         self.plan = plan
+        # pytest-lsp's run hook reads `funcargs` and, without it, stops the run of any other item
+        self.funcargs: dict[str, Any] = {}
 
     def runtest(self) -> None:
         outcome = run_case(self.plan)

@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from hfsm.autonomy import level_of
 from hfsm.runtime.failing import Failure
 from hfsm.runtime.run import RunOptions, RunResult, run
 from hfsm.testing.expect import Comparison, Mismatch
@@ -27,6 +28,11 @@ class CaseResult:
 
 
 def run_case(plan: CasePlan) -> CaseResult:
+    if plan.verify is not None:
+        from hfsm.testing.verify_case import verify_case  # the search: loaded only for such cases
+
+        failures, _ = verify_case(plan)
+        return CaseResult(plan, failures, RunResult({}, 0.0), [])
     program, calls = program_for(plan)
     inputs = [entry for entry, _ in plan.inputs]
     messages = [message for message, _ in plan.messages]
@@ -34,7 +40,16 @@ def run_case(plan: CasePlan) -> CaseResult:
     trace = ListTrace()
     failing = [Failure(f.agent, f.at, f.reason) for f in plan.fail]
     options = RunOptions(
-        plan.top, plan.agents, plan.params, plan.seed, plan.max_time, failing, plan.agent_params
+        plan.top,
+        plan.agents,
+        plan.params,
+        plan.seed,
+        plan.max_time,
+        failing,
+        plan.agent_params,
+        scopes=plan.scopes,
+        autonomy=level_of(plan.autonomy),
+        decisions=plan.decisions,
     )
     try:
         result = run(program, world, options, trace)

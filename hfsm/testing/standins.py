@@ -26,7 +26,7 @@ def _stand_in(name: str, plan: StandInPlan, calls: Calls) -> Primitive:
         key = (ctx.agent, name)
         n = calls.count[key]
         calls.count[key] += 1
-        calls.params.setdefault(key, []).append(params)
+        calls.params.setdefault(key, []).append({**params, "scope": ctx.scope} if ctx.scope else params)
         steps = plan.steps_for(ctx.agent)
         if steps is None:
             raise LookupError(f"the stand-in for '{name}' has no script for agent '{ctx.agent}' (by_agent)")

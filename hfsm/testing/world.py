@@ -48,7 +48,7 @@ class ScriptedWorld(NullWorld):
             tick = message_tick(m.at, dt)
             targets = [m.to] if m.to is not None else [a for a in agents if a != m.from_]
             for to in targets:
-                self._scripted.append((tick, i, Message(m.message, m.from_, to, dict(m.data), tick - 1)))
+                self._scripted.append((tick, i, Message(m.qualified, m.from_, to, dict(m.data), tick - 1)))
         self._scripted.sort(key=lambda item: (item[0], item[1]))
 
     def inputs(self) -> Mapping[str, InputSpec]:

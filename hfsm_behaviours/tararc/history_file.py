@@ -119,6 +119,8 @@ def loads(text: str, file: str = "<history>") -> History:
         code = exc.character if isinstance(exc.character, int) else ord(exc.character)
         message = f"not valid JSON: character U+{code:04X} not allowed"
         raise HistoryError([(file, line, col, message)]) from None
+    except RecursionError:
+        raise HistoryError([(file, 1, 1, "not a history file: lists or objects nested too deep")]) from None
     reader = _Reader(file)
     history = reader.document(root)
     if reader.errors or history is None:

@@ -36,11 +36,13 @@ def tararc_watch(
 
 @primitive(outcomes=["silent"], outputs=["heard"])
 def partner_silent(
-    ctx: Context, *, partner: str, message: str, silence: float = 20.0, grace: float = 60.0
+    ctx: Context, *, message: str, partner: str = "", silence: float = 20.0, grace: float = 60.0
 ) -> Outcome:
-    """Listen to a partner's heartbeat (`message`, as `say` sends it, from `partner` only) until
+    """Listen to a partner's heartbeat (`message`, as `say` sends it, from `partner` only; '': from
+    any robot, as under a pair's scope, where only the other robot's can come) until
     it has been silent for `silence` seconds, or was never heard within `grace` seconds (it may
-    start later). A failed robot says nothing (SPEC 15): this is how its partner learns of it.
+    start later). A failed robot says nothing (docs/REFERENCE.md#agents-that-fail): this is how its
+    partner learns of it.
     `heard`: whether the partner was heard at all."""
     quiet, late = span_ticks(silence, ctx.dt), span_ticks(grace, ctx.dt)
     start = ctx.tick
@@ -48,7 +50,7 @@ def partner_silent(
 
     def gone() -> bool:
         while (m := ctx.receive(message)) is not None:
-            if m.sender == partner:
+            if not partner or m.sender == partner:
                 last[:] = [ctx.tick]
         return ctx.tick - last[0] >= quiet if last else ctx.tick - start >= late
 

@@ -1,4 +1,4 @@
-"""`hfsm-run --fail AGENT@S` (SPEC 10 and 15): --json, --trace, exit codes, bad values."""
+"""`hfsm-run --fail AGENT@S` (docs/REFERENCE.md#hfsm-run and #agents-that-fail): --json, --trace, exit codes, bad values."""
 
 from __future__ import annotations
 

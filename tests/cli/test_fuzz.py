@@ -17,6 +17,7 @@ from collections.abc import Iterator
 from pathlib import Path
 from types import FrameType
 
+from helpers import finding_lines
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -60,7 +61,7 @@ def hfsm_run(*argv: str) -> tuple[int, str, str]:
 
 def assert_findings_only(code: int, err: str, path: Path) -> None:
     assert "Traceback" not in err, err
-    for line in err.splitlines():
+    for line in finding_lines(err):
         if line.startswith("pybullet build time") or line == f"{path}: ok ({line.split('(')[-1]}":
             continue
         assert FINDING.match(line), f"not FILE:LINE:COL: {line!r} (exit {code})"

@@ -7,6 +7,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 import pytest
+from helpers import finding_lines
 
 from hfsm.cli.run import main
 
@@ -56,7 +57,7 @@ def test_a_machine_without_a_history_param_is_told_its_params(
     path = machine("m", NONE)
     code, out, err = run(capsys, path, "--history", "h.json")
     assert code == 2 and out == ""
-    assert err.strip() == (f"{path}:1:1: error[E302]: --history: 'm' has no param 'history' to take the history "
+    assert "\n".join(finding_lines(err)) == (f"{path}:1:1: error[E302]: --history: 'm' has no param 'history' to take the history "
                            "file ('m' takes: n, gain)")
     assert run(capsys, path, "--check", "--history", "h.json")[0] == 2
 
@@ -78,7 +79,7 @@ def test_a_bad_history_file_is_exit_2_at_its_positions_before_anything_runs(
     for check in ([], ["--check"]):
         code, out, err = run(capsys, machine("m", KEEPS), *given, *check, "--trace", trace)
         assert code == 2 and out == "" and "Traceback" not in err
-        assert err.splitlines() == [
+        assert finding_lines(err) == [
             f"{bad}:2:12: error[E340]: missing field 'n_f' (param 'history' of 'm')",
             f"{bad}:2:23: error[E340]: a pair names two different robots (param 'history' of 'm')",
             f"{bad}:2:41: error[E340]: unknown field 'nf'; did you mean 'n_f'? (param 'history' of 'm')",

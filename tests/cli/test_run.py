@@ -1,4 +1,4 @@
-"""`hfsm-run` as users meet it: flags, output, exit codes (SPEC section 10)."""
+"""`hfsm-run` as users meet it: flags, output, exit codes (docs/REFERENCE.md#hfsm-run)."""
 
 from __future__ import annotations
 
@@ -9,6 +9,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 import pytest
+from helpers import finding_lines
 
 from hfsm.cli.run import main
 
@@ -103,7 +104,7 @@ def test_bad_file_lists_every_error_with_positions(
     )
     code, out, err = run(capsys, path, "--json")
     assert code == 2 and out == ""
-    lines = err.strip().splitlines()
+    lines = finding_lines(err)
     assert lines[0].endswith("m.yaml:3:11: error[E300]: unknown behaviour 'wiat'; did you mean 'wait'?")
     assert len(lines) == 3
 
@@ -114,7 +115,7 @@ def test_max_time_and_trace(machine: Machine, capsys: pytest.CaptureFixture[str]
     code, out, _ = run(capsys, path, "--max-time", "1", "--json", "--trace", trace)
     assert code == 1 and json.loads(out)["time"] == 1.0
     records = [json.loads(line) for line in trace.read_text().splitlines()]
-    assert [r["kind"] for r in records] == ["enter", "enter", "exit", "exit"]
+    assert [r["kind"] for r in records] == ["run", "enter", "enter", "exit", "exit"]
 
 
 def test_schema(capsys: pytest.CaptureFixture[str]) -> None:
@@ -173,3 +174,28 @@ def test_a_simulator_primitive_under_world_none_is_named_as_such(
 def test_an_unwritable_trace_is_exit_2(capsys: pytest.CaptureFixture[str]) -> None:
     code, _, err = run(capsys, ROOT / "examples" / "hello.yaml", "--trace", "/proc/nowhere/t.jsonl")
     assert code == 2 and "--trace: cannot write /proc/nowhere/t.jsonl" in err
+
+
+PATIENCE = """
+    params:
+      s: {type: float, default: 0.5}
+    outcomes: [done, gave_up]
+    failures: [gave_up]
+    states:
+      a: {do: wait, with: {seconds: "${params.s}"}, timer: 1, on: {done: done, timeout: gave_up}}
+"""
+
+
+@pytest.mark.parametrize(("text", "args", "code", "said"), [
+    (PATIENCE, [], 0, ""),
+    (PATIENCE, ["--param", "s=2"], 3, "robot ended in the failure outcome 'gave_up' (--fail-exit: exit 3)"),
+    ("outcomes: [done]\ntimer: 1\nstates:\n  a: {do: wait, with: {seconds: 2}, on: {done: done}}\n", [], 3,
+     "robot ended in the failure outcome 'timeout'"),
+])
+def test_fail_exit_makes_a_failure_outcome_exit_3(tmp_path: Path, capsys: pytest.CaptureFixture[str], text: str,
+                                                 args: list[str], code: int, said: str) -> None:
+    path = tmp_path / "patience.yaml"
+    path.write_text(text)
+    assert run(capsys, path, "--quiet", *args)[0] == 0  # without the flag a failure outcome is an outcome
+    got, _, err = run(capsys, path, "--quiet", "--fail-exit", *args)
+    assert got == code and said in err

@@ -186,3 +186,21 @@ def test_the_dot_output_covers_every_state_and_outcome_exactly_once(m: Machine) 
     assert all(n == 1 for n in counts.values())
     edges = dot.count(" -> ")
     assert edges >= len(m.states)  # every state has at least one arc out (or the start arc in)
+
+
+def test_a_scope_shows_on_its_state(tmp_path: Any) -> None:
+    from hfsm.load import load
+    from hfsm.registry import Registry
+
+    (tmp_path / "talk.yaml").write_text("outcomes: [done]\nstates:\n  a: {do: wait, with: {seconds: 1}, on: {done: done}}\n")
+    top = tmp_path / "team.yaml"
+    top.write_text(
+        "outcomes: [done]\nstates:\n"
+        "  pair: {do: talk, scope: {name: \"${'pair_' + agent.id}\", agents: []}, timer: 5, "
+        "on: {done: both, timeout: done}}\n"
+        "  both:\n    parallel: {x: {do: talk}}\n    join: [{else: done}]\n    scope: {name: crew, agents: []}\n"
+    )
+    registry = Registry()
+    fig = machine_figure("team", Sources.from_loaded(load([top], registry=registry), registry))
+    assert _node(fig, "pair").lines == ("talk()", "scope: pair_\u2026", "timer 5 s")
+    assert _node(fig, "both").lines == ("scope: crew",)

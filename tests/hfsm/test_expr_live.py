@@ -1,4 +1,4 @@
-"""The names of SPEC 12 and 13 in expressions: `state.*`, `machine.time`, `in.x`."""
+"""The names of docs/REFERENCE.md#watches and #retries in expressions: `state.*`, `machine.time`, `in.x`."""
 
 from __future__ import annotations
 
@@ -71,7 +71,7 @@ def test_inputs_are_read_only_when_evaluated() -> None:
         ("machine.time", Names(["x"], None, machine_time=False), "'machine.time' cannot be read in"),
         ("in.bearng", Names([], [], inputs=["bearing"]), "unknown input 'in.bearng' (the world declares"),
         ("in.x", Names([], [], inputs=[]), "(the world declares none)"),
-        ("in.a.b", NAMES, "'in.a.b': only"),
+        ("in.a.b", NAMES, "'in.a.b': no attribute access"),
         ("__in__.x", NAMES, "unknown name '__in__'"),
     ],
 )

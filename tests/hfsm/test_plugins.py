@@ -67,3 +67,35 @@ def test_commands_that_do_not_need_a_broken_plugin_keep_working(
     assert main([str(ROOT / "examples" / "hello.yaml"), "--check"]) == 0
     err = capsys.readouterr().err
     assert "ok (1 machines checked)" in err and "Traceback" not in err
+
+
+def fake_distribution(folder: Path, entry_points: str, modules: dict[str, str]) -> None:
+    """An installed distribution as importlib.metadata finds it: a *.dist-info on sys.path."""
+    info = folder / "old_plugin-1.0.dist-info"
+    info.mkdir()
+    (info / "METADATA").write_text("Metadata-Version: 2.1\nName: old-plugin\nVersion: 1.0\n")
+    (info / "entry_points.txt").write_text(entry_points)
+    for name, text in modules.items():
+        (folder / f"{name}.py").write_text(text)
+
+
+@pytest.mark.parametrize(("entry", "module", "says"), [
+    ("behaviours.registry:register", "", "names the module 'behaviours', which hfsm renamed 'hfsm_behaviours'"),
+    ("sim.world:register", "", "names the module 'sim', which hfsm renamed 'hfsm_sim'"),
+    ("old_plug:register", "from behaviours.body import Body\n\ndef register(registry):\n    pass\n",
+     "imports the module 'behaviours', which hfsm renamed 'hfsm_behaviours'"),
+    ("old_plug:register", "import sim.robot\n\ndef register(registry):\n    pass\n",
+     "imports the module 'sim', which hfsm renamed 'hfsm_sim'"),
+])
+def test_a_plugin_naming_the_old_packages_gets_the_new_names(
+    entry: str, module: str, says: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+    caplog: pytest.LogCaptureFixture,
+) -> None:
+    fake_distribution(tmp_path, f"[{GROUP}]\nold = {entry}\n", {"old_plug": module} if module else {})
+    monkeypatch.syspath_prepend(str(tmp_path))
+    registry = Registry.discover()
+    assert "wave" not in registry.names() and "scan_for_table" in registry.names()  # ours still load
+    text = warnings_of(caplog)
+    assert f"plug-in 'old' ({entry}, entry-point group {GROUP})" in text and says in text, text
+    assert "Traceback" not in text
+    assert main([str(ROOT / "examples" / "hello.yaml"), "--check"]) == 0  # the run goes on without it

@@ -5,9 +5,11 @@ import os
 from pathlib import Path
 
 import pytest
+import yaml
 from hypothesis import given
 from hypothesis import strategies as st
 
+from hfsm import yamlio
 from hfsm.errors import UserError
 from hfsm.yamlio import MAX_BYTES, MAX_DEPTH, decode, parse_text, read_file
 
@@ -85,11 +87,49 @@ def first(text: str) -> tuple[int, int, str, str]:
     return f.line, f.col, f.code, f.message
 
 
-@pytest.mark.parametrize("depth", [150, 100_000])
-def test_any_flow_nesting_depth_is_a_positioned_error(depth: int) -> None:
+class _StrictParser(yamlio._PyParser):
+    """A parser with a flow nesting limit of its own just above ours, as newer libyaml has (1,000)."""
+
+    def __init__(self, text: str) -> None:
+        if text.count("[") > MAX_DEPTH + 10:
+            mark = yaml.Mark("f.yaml", MAX_DEPTH + 13, 0, MAX_DEPTH + 13, None, None)
+            raise yaml.parser.ParserError(None, None, "exceeded max depth of 110", mark)
+        super().__init__(text)
+
+
+PARSERS = {"installed": yamlio._Parser, "pure Python": yamlio._PyParser, "strict": _StrictParser}
+
+
+@pytest.mark.parametrize("parser", PARSERS)
+@pytest.mark.parametrize("depth", [150, 1_001, 100_000])
+def test_any_flow_nesting_depth_is_a_positioned_error(depth: int, parser: str,
+                                                       monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(yamlio, "_Parser", PARSERS[parser])
     line, col, code, message = first("a: " + "[" * depth + "]" * depth + "\n")
     assert (line, col, code) == (1, 4 + MAX_DEPTH - 1, "E106")
     assert f"{MAX_DEPTH} deep" in message
+
+
+@given(st.integers(1, 3), st.integers(MAX_DEPTH - 3, 5_000), st.sampled_from("[{"))
+def test_brackets_inside_blocks_past_the_limit_are_a_positioned_error(blocks: int, depth: int,
+                                                                      bracket: str) -> None:
+    head = "".join(" " * i + f"k{i}:\n" for i in range(blocks))
+    inner = "[1]" if bracket == "[" else "{a: 1}"
+    opens = "".join(bracket if bracket == "[" else "{b: " for _ in range(depth))
+    closes = ("]" if bracket == "[" else "}") * depth
+    text = head + " " * blocks + opens + inner + closes + "\n"
+    if blocks + depth + 1 <= MAX_DEPTH:
+        parse_text(text, "f.yaml")
+        return
+    line, col, code, _ = first(text)
+    assert (line, code) == (blocks + 1, "E106")
+    width = 1 if bracket == "[" else len("{b: ")
+    assert col == blocks + 1 + (MAX_DEPTH - blocks) * width  # the collection one past the limit
+
+
+def test_brackets_in_quotes_and_comments_do_not_count() -> None:
+    text = "a: '" + "[" * 300 + "'  # " + "{" * 300 + "\nb: \"" + "[" * 300 + "\"\n"
+    assert parse_text(text, "f.yaml").data["a"] == "[" * 300
 
 
 def test_deep_block_nesting_is_a_positioned_error() -> None:

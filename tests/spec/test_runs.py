@@ -173,7 +173,7 @@ FAILS: dict[str, tuple[list[str], int, dict[str, Any]]] = {
 
 @pytest.mark.parametrize("case", sorted(FAILS))
 def test_agents_that_fail(case: str, capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
-    """SPEC 15: a failed agent's entry, the exit code decided by the others, its `failed` record."""
+    """docs/REFERENCE.md#agents-that-fail: a failed agent's entry, the exit code decided by the others, its `failed` record."""
     args, code, agents = FAILS[case]
     ran = hfsm_run(capsys, tmp_path, "team", ["--agents", "a,b,c", *args])
     assert ran.code == code

@@ -1,6 +1,6 @@
 """The peers of bench_engine: one adapter per library over shared machine descriptions.
 
-Workloads as in /work/shared/research/peer_bench.md:
+Workloads as docs/PERFORMANCE.md describes them:
 - W1 flat: A <-> B on `toggle`;
 - W2 nested: root > {P, Q} > {P1, P2 | Q1, Q2} > {P1a, P1b, ...}; `go` is declared on P and Q and
   fired while a leaf is active, so each dispatch exits 3 states and enters 3; every state counts its

@@ -13,8 +13,10 @@ async function start() {
   const first = await (await fetch("/api/records?from=0")).json();
   replay.add(first.records);
   page.ended = first.ended;
+  page.control = meta.control;
   if (meta.video) { $("video").src = meta.video; $("video-box").hidden = false; }
-  if (page.live && !page.ended) follow(first.next); else seek(page.live ? replay.end : 0);
+  if (page.live && !page.ended) follow(first.next);
+  seek(page.live ? replay.end : 0);  // a live run that waits (for its operator) shows where it stands
   status();
 }
 

@@ -44,6 +44,7 @@ class Replay {
 
   apply(r) {
     if (r.kind === "pose") { this.poses = r; return; }
+    if (r.agent == null) return;  // the run's own records: its flags, a resume, the operator's pause
     const a = this.agent(r.agent);
     const key = r.path.join("/");
     switch (r.kind) {

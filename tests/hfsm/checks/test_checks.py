@@ -1,4 +1,4 @@
-"""Every check of SPEC section 9, by its stable code, at its position."""
+"""Every check of docs/REFERENCE.md#hfsm-run, by its stable code, at its position."""
 
 from __future__ import annotations
 
@@ -131,12 +131,14 @@ def test_recursion_through_a_chain(machine: Machine) -> None:
     assert any("E312 'ping' calls itself: ping -> pong -> ping" in f for f in found)
 
 
-def test_machine_may_not_take_a_builtin_or_primitive_name(machine: Machine) -> None:
+def test_machine_may_not_take_a_builtin_name_and_shadows_a_primitive(machine: Machine) -> None:
     machine("probe", "outcomes: [done]\nstates:\n  a: {do: log, with: {text: x}, on: {done: done}}\n")
     path = machine(
         "top", "outcomes: [done]\nstates:\n  a: {do: probe, with: {gain: 1}, on: {ok: done, failure: done}}\n"
     )
-    assert "E319" in codes(path.parent / "probe.yaml")
+    assert codes(path.parent / "probe.yaml") == ["W406"]  # a user's machine shadows the primitive (docs/REFERENCE.md#hfsm-run)
+    machine("wait", "outcomes: [done]\nstates:\n  a: {do: log, with: {text: x}, on: {done: done}}\n")
+    assert "E319" in codes(path.parent / "wait.yaml")
 
 
 @pytest.mark.parametrize(

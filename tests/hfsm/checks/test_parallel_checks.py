@@ -1,4 +1,4 @@
-"""Checks of parallel states (SPEC 11), each by code, line, column and message."""
+"""Checks of parallel states (docs/REFERENCE.md#parallel-states), each by code, line, column and message."""
 
 from __future__ import annotations
 

@@ -90,7 +90,7 @@ def test_block_style_findings_point_at_what_is_wrong(
         f"{folder / 'a.yaml'}:7:5: error[E311]: choice 'c' must end with an 'else' branch",
         f"{folder / 'b.yaml'}:6:13: error[E312]: 'b' calls itself: b -> a -> b",
         f"{folder / 'b.yaml'}:7:16: error[E302]: unknown param 'data' of 'a' ('a' takes: nothing)",
-        f"{folder / 'b.yaml'}:7:30: error[E314]: unknown variable 'z'",
+        f"{folder / 'b.yaml'}:7:33: error[E314]: unknown variable 'z'",  # at vars.z, inside the string
     ]
 
 
@@ -111,11 +111,12 @@ def test_check_knows_the_world_and_a_retry_count_is_positive(
     )
     code, lines = check(capsys, str(path), "--check", "--world", "none")
     message = "'times' must be a whole number > 0 or a '${…}' expression, not 0"
-    assert (code, lines) == (2, [f"{path}:6:32: error[E200]: {message}"])
+    no_input = "error[E330]: the run's world declares no input 'in.battery' (it declares: none)"
+    assert (code, lines) == (2, [f"{path}:5:21: {no_input}", f"{path}:6:32: error[E200]: {message}"])
     path.write_text(path.read_text().replace("times: 0", "times: 2"))
     code, lines = check(capsys, str(path), "--check", "--world", "none")
     message = "the run's world declares no input 'in.battery' (it declares: none)"
-    assert (code, lines) == (2, [f"{path}:5:18: error[E330]: {message}"])
+    assert (code, lines) == (2, [f"{path}:5:21: error[E330]: {message}"])
 
 
 def test_schema_errors_of_rules_and_retries_name_the_right_keys(

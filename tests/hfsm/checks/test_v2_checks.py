@@ -1,4 +1,4 @@
-"""Checks of watches, retries, live names and inputs (SPEC 12, 13), and the warnings of language v2."""
+"""Checks of watches, retries, live names and inputs (docs/REFERENCE.md#watches and #retries), and the warnings of language v2."""
 
 from __future__ import annotations
 
@@ -50,8 +50,8 @@ def test_retry_outcomes_and_counts(machine: Machine) -> None:
         "r:8:24 E327 'wait' has no outcome 'blocked' to retry (it has: done, and 'error')",
         "r:8:33 E327 'wait' has no outcome 'timeout' to retry (it has: done, and 'error'); "
         "a state's own timer is never retried",
-        "r:8:57 E314 'vars.x': only params and agent.id may be read here",
-        f"r:8:77 E331 'state.time' cannot be read in a retry's 'times' or 'delay'; {STATE_NAMES}",
+        "r:8:60 E314 'vars.x': only params and agent.id may be read here",
+        f"r:8:80 E331 'state.time' cannot be read in a retry's 'times' or 'delay'; {STATE_NAMES}",
         "r:10:3 W400 state 'next' cannot be reached from 'go'",
     ]
 
@@ -87,15 +87,15 @@ def test_live_names_where_they_may_be_read_and_a_literal_if(machine: Machine) ->
         """,
     )
     assert found(path, BATTERY) == [
-        "e:4:8 E331 'in.battery' cannot be read in the machine's timer; only params and agent.id",
-        "e:4:8 E331 'machine.time' cannot be read in the machine's timer",
-        f"e:4:8 E331 'state.time' cannot be read in the machine's timer; {STATE_NAMES}",
-        f"e:5:14 E331 'state.attempt' cannot be read in the machine's outputs; {STATE_NAMES}",
-        "e:5:79 E330 the run's world declares no input 'in.batery' (it declares: battery); "
+        "e:4:22 E331 'machine.time' cannot be read in the machine's timer",
+        f"e:4:37 E331 'state.time' cannot be read in the machine's timer; {STATE_NAMES}",
+        "e:4:50 E331 'in.battery' cannot be read in the machine's timer; only params and agent.id",
+        f"e:5:17 E331 'state.attempt' cannot be read in the machine's outputs; {STATE_NAMES}",
+        "e:5:82 E330 the run's world declares no input 'in.batery' (it declares: battery); "
         "did you mean 'battery'?",
-        "e:8:10 E314 unknown variable 'y'",
+        "e:8:11 E314 unknown variable 'y'",
         "e:8:26 E301 unknown target 'nowhere': not a state or outcome",
-        "e:15:14 E314 unknown name 'state.tme'; did you mean 'state.time'?",
+        "e:15:15 E314 unknown name 'state.tme'; did you mean 'state.time'?",
     ]
 
 
@@ -104,7 +104,7 @@ def test_world_none_declares_no_input(machine: Machine) -> None:
         "i", 'outcomes: [done]\nstates:\n  a: {do: log, with: {text: "${in.battery}"}, on: {done: done}}\n'
     )
     assert found(path, {"none": {}}) == [
-        "i:3:29 E330 the run's world declares no input 'in.battery' (it declares: none)"
+        "i:3:32 E330 the run's world declares no input 'in.battery' (it declares: none)"
     ]
     assert found(path) == []  # no world told: inputs are not checked
 

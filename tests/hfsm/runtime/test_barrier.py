@@ -1,4 +1,4 @@
-"""The `barrier` built-in, SPEC section 14: exact ticks, rounds, at_least, answers to lost notices."""
+"""The `barrier` built-in, docs/REFERENCE.md#barriers: exact ticks, rounds, at_least, answers to lost notices."""
 
 from __future__ import annotations
 
@@ -283,7 +283,7 @@ def test_a_barrier_cancelled_by_its_timer_leaves_the_team_and_counts_its_round(m
     )
     result, _ = execute(path, agents=["a", "b"])
     # a re-enters every 0.2 s (rounds 1 to 4): b, in round 1 from 0.5, holds a's round 3 and passes
-    # in the next tick; a needs b's round to reach its own, which it never does (SPEC 14's rounds).
+    # in the next tick; a needs b's round to reach its own, which it never does (docs/REFERENCE.md#barriers's rounds).
     assert {n: (r.outcome, r.time, r.outputs) for n, r in result.agents.items()} == {
         "a": ("gave_up", 0.8, {"tries": 4}),
         "b": ("done", 0.55, {"tries": 0}),

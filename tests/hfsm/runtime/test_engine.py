@@ -1,4 +1,4 @@
-"""Interpreter semantics, SPEC sections 3 to 6."""
+"""Interpreter semantics, docs/REFERENCE.md#states to 6."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Agents that fail, SPEC section 15: cancelled with clean-up, silent, deaf, one `failed` record."""
+"""Agents that fail, docs/REFERENCE.md#agents-that-fail: cancelled with clean-up, silent, deaf, one `failed` record."""
 
 from __future__ import annotations
 

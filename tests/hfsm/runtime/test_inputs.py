@@ -1,4 +1,4 @@
-"""The world seam for inputs (SPEC 12): read when an expression asks, at most once a tick per agent."""
+"""The world seam for inputs (docs/REFERENCE.md#watches): read when an expression asks, at most once a tick per agent."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Properties over random parallel states (SPEC 11) with random join rules, `else`, background
+"""Properties over random parallel states (docs/REFERENCE.md#parallel-states) with random join rules, `else`, background
 regions, regions that retry, nest a parallel state, wait for a message, fail or never end:
 
 - the interpreter never crashes, and every `enter` has its `exit`;

@@ -1,4 +1,4 @@
-"""Parallel states (SPEC 11), with exact ticks (dt 0.05)."""
+"""Parallel states (docs/REFERENCE.md#parallel-states), with exact ticks (dt 0.05)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Retries (SPEC 13) and cancels that cannot be refused, with exact ticks (dt 0.05)."""
+"""Retries (docs/REFERENCE.md#retries) and cancels that cannot be refused, with exact ticks (dt 0.05)."""
 
 from __future__ import annotations
 
@@ -44,7 +44,7 @@ SPEC_EXAMPLE = """
 
 
 def example(machine: Machine, succeed_at: int = 3, timer: float = 120) -> Path:
-    """SPEC 13's example as written, around a stand-in that arrives on attempt `succeed_at`."""
+    """docs/REFERENCE.md#retries's example as written, around a stand-in that arrives on attempt `succeed_at`."""
     machine("navigate_to_waypoint", NAVIGATE.format(succeed_at=succeed_at))
     return machine("top", SPEC_EXAMPLE.format(timer=timer))
 

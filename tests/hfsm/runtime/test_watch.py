@@ -1,4 +1,4 @@
-"""Watches, state.time and machine.time (SPEC 12), with exact ticks (dt 0.05)."""
+"""Watches, state.time and machine.time (docs/REFERENCE.md#watches), with exact ticks (dt 0.05)."""
 
 from __future__ import annotations
 
@@ -168,7 +168,7 @@ def test_a_watch_to_its_own_state_is_passed_over_and_later_watches_are_tried(mac
     """,
     )
     result, records = execute(path, max_time=5)
-    # the machine's watch into `dock` holds all along: passed over (SPEC 12), never restarting
+    # the machine's watch into `dock` holds all along: passed over (docs/REFERENCE.md#watches), never restarting
     # `dock`, and `dock`'s own watch is still tried
     assert (result.agents["robot"].outcome, result.agents["robot"].time) == ("gave_up", 0.2)
     assert [r["t"] for r in records if r["kind"] == "enter" and r["path"][-1] == "dock"] == [0.0]

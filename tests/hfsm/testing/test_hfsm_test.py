@@ -6,6 +6,7 @@ import textwrap
 from pathlib import Path
 
 import pytest
+from helpers import finding_lines
 
 from hfsm.cli.test import main
 
@@ -286,7 +287,7 @@ def test_bad_test_files_exit_2_with_every_problem_at_its_position(
     code, out, err = hfsm_test(capsys, path)
     assert (code, out) == (2, "")
     file = path.relative_to(Path.cwd()) if path.is_relative_to(Path.cwd()) else path
-    assert err.splitlines() == [
+    assert finding_lines(err) == [
         f"{file}:3:10: error[T303]: 'ping' has no param 'trys'; did you mean 'tries'?",
         f"{file}:5:3: error[T310]: 'wait_for' is a built-in: script what it waits for, not the built-in",
         f"{file}:9:45: error[T311]: no agent 'c' in this test",
@@ -322,7 +323,7 @@ def test_a_world_primitive_left_without_a_stand_in_is_named(
     )
     code, _, err = hfsm_test(capsys, path)
     assert code == 2
-    assert err.strip().endswith(
+    assert finding_lines(err)[-1].endswith(
         "lift.test.yaml:1:10: error[T313]: 'synchronised_lift_table' calls primitives of world 'sim' with "
         "no stand-in: lift_table; add each to `stand_ins:` (tests run without a world)"
     )
@@ -405,7 +406,7 @@ def test_machines_by_path_and_by_lib_and_picking_cases(
     )
     code, _, err = hfsm_test(capsys, path)
     assert code == 2
-    assert err.strip().endswith(
+    assert finding_lines(err)[-1].endswith(
         "nap.test.yaml:9:3: error[T300]: no machine to test: give `machine:` here or at the top of the file"
     )
     path.write_text(path.read_text().replace("  nothing_to_test:\n    expect: {}\n", ""))
@@ -413,3 +414,58 @@ def test_machines_by_path_and_by_lib_and_picking_cases(
     assert "2 passed, 0 failed (2 cases in 1 files" in capsys.readouterr().err
     assert main([str(path), "-k", "path", "-v"]) == 0
     assert capsys.readouterr().out.endswith("nap.test.yaml::by_path\n")
+
+
+def test_messages_scripted_and_expected_under_a_scope(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    write(
+        tmp_path,
+        "ask.yaml",
+        """
+        outcomes: [answered]
+        vars: {said: ""}
+        outputs: {said: "${vars.said}"}
+        states:
+          ask: {do: send, with: {message: question}, on: {sent: hear}}
+          hear: {do: wait_for, with: {message: answer}, save: {said: text}, on: {received: answered}}
+        """,
+    )
+    write(
+        tmp_path,
+        "pair_up.yaml",
+        """
+        outcomes: [done]
+        vars: {said: ""}
+        outputs: {said: "${vars.said}"}
+        states:
+          talk:
+            do: ask
+            scope: {name: pair, agents: []}
+            save: {said: said}
+            on: {answered: done}
+        """,
+    )
+    path = write(
+        tmp_path,
+        "pair_up.test.yaml",
+        """
+        machine: pair_up
+        agents: [a]
+        tests:
+          scoped:
+            messages:
+              - {at: 0.1, from: b, message: answer, data: {text: plain}}
+              - {at: 0.5, from: b, scope: pair, message: answer, data: {text: scoped}}
+            expect:
+              outcome: done
+              time: 0.5
+              outputs: {said: scoped}
+              sends: [{message: question, scope: pair, to: others}]
+          unscoped_expectation_fails:
+            messages: [{at: 0.5, from: b, scope: pair, message: answer, data: {text: scoped}}]
+            expect: {sends: [question]}
+        """,
+    )
+    code, out, err = hfsm_test(capsys, path)
+    assert code == 1
+    assert "1 passed, 1 failed" in err
+    assert "expected message 1 sent to be question, got pair/question to others" in out

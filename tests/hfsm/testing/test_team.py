@@ -1,5 +1,5 @@
 """`hfsm-test`'s team settings: params for one agent (`agent_params`), and scripted partners that
-meet the agents at barriers (`partners`, SPEC 14)."""
+meet the agents at barriers (`partners`, docs/REFERENCE.md#barriers)."""
 
 from __future__ import annotations
 
@@ -7,6 +7,7 @@ import textwrap
 from pathlib import Path
 
 import pytest
+from helpers import finding_lines
 
 from hfsm.cli.test import main
 
@@ -125,7 +126,7 @@ def test_team_settings_are_checked(tmp_path: Path, capsys: pytest.CaptureFixture
     code, out, err = hfsm_test(capsys, path)
     assert (code, out) == (2, "")
     name = path.name
-    lines = [line.split(name, 1)[1] for line in err.splitlines()]
+    lines = [line.split(name, 1)[1] for line in finding_lines(err)]
     assert lines == [
         ":3:35: error[T311]: no agent 'c' in this test (agents: a, b)",
         ":4:20: error[T314]: 'b' is an agent of the test: a partner is a team mate the test scripts",

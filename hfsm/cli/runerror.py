@@ -1,0 +1,68 @@
+"""Where a run-time error happened, in the files: the state (or the expression in it) that its path
+names, as a finding with the agent and the time, so it prints like a check's error."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+from pathlib import Path
+
+from hfsm.errors import Finding
+from hfsm.library import MachineFile
+from hfsm.model import CallState, ParallelState
+from hfsm.yamlio import Path_
+
+_QUOTED = re.compile(r"in '(.+?)'(?::|$)")
+
+
+def locate(
+    machines: Mapping[str, MachineFile], top: str, origin: str, message: str, agent: str, time: float
+) -> Finding | None:
+    """The finding of an error met by `agent` at `time` in the state at path `origin` (`top/s/...`)."""
+    found = _state(machines, top, origin.split("/")[1:])
+    if found is None:
+        return None
+    machine, path = found
+    line, col = machine.doc.pos(path, key=True)
+    expression = _QUOTED.search(message)
+    if expression is not None:
+        line, col = _find_text(machine.doc.file, expression.group(1), line, col)
+    return Finding(machine.doc.file, line, col, "", f"{agent} at t={time:g} s: {message}")
+
+
+def _state(
+    machines: Mapping[str, MachineFile], top: str, names: list[str]
+) -> tuple[MachineFile, Path_] | None:
+    """The machine file and the path of the last state along `names` (states, regions, states...)."""
+    machine = machines.get(top)
+    found: tuple[MachineFile, Path_] | None = None
+    i = 0
+    while machine is not None and i < len(names):
+        state = machine.model.states.get(names[i])
+        if state is None:
+            return found
+        found = (machine, ("states", names[i]))
+        callee = None
+        if isinstance(state, CallState):
+            callee, i = state.do, i + 1
+        elif isinstance(state, ParallelState) and i + 1 < len(names) and names[i + 1] in state.parallel:
+            region = names[i + 1]
+            found = (machine, ("states", names[i], "parallel", region))
+            callee, i = state.parallel[region].do, i + 2
+        else:
+            i += 1
+        machine = machines.get(callee) if callee is not None else None
+    return found
+
+
+def _find_text(file: str, text: str, line: int, col: int) -> tuple[int, int]:
+    """The first place at or after (line, col) where `text` is written; (line, col) if nowhere."""
+    try:
+        lines = Path(file).read_text(encoding="utf-8").splitlines()
+    except (OSError, UnicodeDecodeError):
+        return line, col
+    for n in range(line - 1, len(lines)):
+        at = lines[n].find(text)
+        if at >= 0:
+            return n + 1, at + 1
+    return line, col

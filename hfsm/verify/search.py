@@ -1,0 +1,179 @@
+"""Breadth-first search over the runs the world's choices allow, each situation explored once.
+
+A state is the engine between two ticks, as bytes (`Snapshots`); its successors are the next tick
+run once for every combination of the choices made in it (`Chooser` enumerates them). Breadth first,
+so the first violation found is one of the shortest (fewest ticks in which something happened).
+"""
+
+from __future__ import annotations
+
+import math
+import random
+import time
+from collections import deque
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+from typing import Any
+
+from hfsm.runtime.engine import Engine
+from hfsm.runtime.program import Program
+from hfsm.runtime.run import RunOptions
+from hfsm.verify.choices import Choice, Chooser
+from hfsm.verify.radio import ChoosingWorld
+from hfsm.verify.snapshot import Snapshots, digest, shared_objects
+from hfsm.verify.step import Ended, first_state, next_state
+
+# A property looked at after each tick: a violation as (kind, agent, text), or None.
+Check = Callable[[Engine, "Ended | None"], "tuple[str, str, str] | None"]
+
+
+_RNG = random.Random(0)
+
+
+@dataclass
+class Budget:
+    loss: int = 0
+    delay: int = 0
+    fail: int = 0
+    last_tick: int = 12000
+    max_states: int = 1_000_000
+    max_seconds: float = math.inf
+
+
+@dataclass
+class Violation:
+    kind: str
+    agent: str
+    text: str
+    tick: int
+    choices: list[Choice]
+
+
+@dataclass
+class Outcome:
+    states: int = 0
+    exhausted: bool = False
+    seconds: float = 0.0
+    violation: Violation | None = None
+    top_outcomes: set[str] = field(default_factory=set)  # reached by some agent in some run
+
+
+@dataclass
+class _Node:
+    parent: int
+    choices: list[Choice]
+
+
+def explore(
+    program: Program,
+    options: RunOptions,
+    budget: Budget,
+    check: Check,
+    chooser: Chooser,
+    inputs: dict[str, Any],
+) -> Outcome:
+    """Search from tick 0; `program`'s stand-ins must ask `chooser`."""
+    search = _Search(program, budget, check, chooser)
+    try:
+        return search.run(lambda: _first(program, options, chooser, budget, inputs))
+    finally:
+        search.snaps.close()
+
+
+class _Search:
+    def __init__(self, program: Program, budget: Budget, check: Check, chooser: Chooser) -> None:
+        self.started = time.perf_counter()
+        self.budget = budget
+        self.check = check
+        self.chooser = chooser
+        self.snaps = Snapshots(shared_objects([program, chooser, program.registry, _RNG]))
+        self.result = Outcome()
+        self.nodes: list[_Node] = []
+        self.seen: set[bytes] = set()
+        self.ends = 0  # runs that ended (each a state of its own, never hashed)
+        self.queue: deque[tuple[int, bytes]] = deque()
+
+    def run(self, first: Callable[[], tuple[Engine, Ended | None]]) -> Outcome:
+        for engine, ended in _all_prefixes(self.chooser, first):
+            if not self.visit(engine, ended, -1):
+                return self.done(False)
+        chooser, snaps, last = self.chooser, self.snaps, self.budget.last_tick
+        while self.queue:
+            if len(self.seen) >= self.budget.max_states or self._late():
+                return self.done(False)
+            index, data = self.queue.popleft()
+            pending: list[tuple[int, ...]] = [()]
+            while pending:
+                chooser.begin(pending.pop())
+                engine = snaps.load(data)
+                ended = next_state(engine, engine.world, chooser, last)
+                pending.extend(chooser.siblings())
+                if not self.visit(engine, ended, index):
+                    return self.done(False)
+        return self.done(True)
+
+    def _late(self) -> bool:
+        return time.perf_counter() - self.started > self.budget.max_seconds
+
+    def visit(self, engine: Engine, ended: Ended | None, parent: int) -> bool:
+        """Record a state reached; False when it violates a property (result.violation set)."""
+        made = list(self.chooser.made)
+        result = self.result
+        for agent in engine.agents:
+            if agent.result is not None and agent.result.failed is None and agent.result.outcome:
+                result.top_outcomes.add(agent.result.outcome)
+        found = self.check(engine, ended)
+        if found is not None:
+            self.nodes.append(_Node(parent, made))
+            result.violation = Violation(*found, engine.tick, _path(self.nodes, len(self.nodes) - 1))
+            return False
+        if ended is not None or engine.running == 0:
+            self.ends += 1
+            return True
+        data = self.snaps.dump(engine)
+        key = digest(data)
+        if key in self.seen:
+            return True
+        self.seen.add(key)
+        self.nodes.append(_Node(parent, made))
+        self.queue.append((len(self.nodes) - 1, data))
+        return True
+
+    def done(self, exhausted: bool) -> Outcome:
+        result = self.result
+        result.states = len(self.seen) + self.ends
+        result.exhausted = exhausted
+        result.seconds = time.perf_counter() - self.started
+        return result
+
+
+def _first(
+    program: Program, options: RunOptions, chooser: Chooser, budget: Budget, inputs: dict[str, Any]
+) -> tuple[Engine, Ended | None]:
+    world = ChoosingWorld(chooser, budget.loss, budget.delay, budget.fail, inputs)
+    made = first_state(program, options, chooser, world)
+    if isinstance(made, Ended):
+        return Engine([], world, program.dt, None), made
+    for agent in made.agents:
+        agent.rng = _RNG  # no stand-in or built-in draws from it: one for all, shared by every state
+    return made, None
+
+
+def _all_prefixes(
+    chooser: Chooser, run: Callable[[], tuple[Engine, Ended | None]]
+) -> Iterator[tuple[Engine, Ended | None]]:
+    pending: list[tuple[int, ...]] = [()]
+    while pending:
+        chosen = pending.pop()
+        chooser.begin(chosen)
+        outcome = run()
+        pending.extend(chooser.siblings())
+        yield outcome
+
+
+def _path(nodes: list[_Node], index: int) -> list[Choice]:
+    chain: list[list[Choice]] = []
+    while index >= 0:
+        chain.append(nodes[index].choices)
+        index = nodes[index].parent
+    return [c for made in reversed(chain) for c in made]
