@@ -171,7 +171,7 @@ def _world_records(engine: Engine, records: WorldRecords | None, tick: int) -> N
             engine.records.put(record)
 
 
-def _next_tick(engine: Engine, failures: Failures, operator: Operator | None) -> int | None:
+def _next_tick(engine: Engine, failures: Failures, operator: Operator | None = None) -> int | None:
     """In a static world, the next tick in which anything can happen; None when nothing can."""
     now = engine.tick
     hit = operator is not None and operator.hit()
