@@ -33,7 +33,8 @@ def room_assign(ctx: Context, *, plan: dict[str, Any], lost: list[Any], done: li
     """This robot's job after the robots `lost` and the tables `done`, a dropped table where a
     survivor `seen` it, on a channel no `spent` pairing used, no helper lent to a table a survivor
     is `sliding` alone; `table` and `toward` in its own start frame (from `start`, where it was told
-    it was placed). `excluded` when a teammate took this robot for lost. `drawn`: what the monitor
+    it was placed); `turn`: the tables not yet done that its table waits for (their ways meet,
+    `claims.turns`). `excluded` when a teammate took this robot for lost. `drawn`: what the monitor
     draws of this robot's belief (`plan.drawn`: claimed corridors, its table, teammates `where` they
     last said they stood)."""
     where = {str(t): [float(v["x"]), float(v["y"])] for t, v in seen.items()}
@@ -41,8 +42,10 @@ def room_assign(ctx: Context, *, plan: dict[str, Any], lost: list[Any], done: li
                  [str(c) for c in spent or []], [str(e) for e in sliding or []])
     if job is None:
         return Outcome("excluded", job={}, drawn={})
+    after = plan["tables"][job["table"]].get("after", []) if job["table"] else []
     local = {"table_local": to_local(start, job["at"]) if job["at"] else [],
-             "toward_local": to_local(start, job["toward"]) if job["toward"] else []}
+             "toward_local": to_local(start, job["toward"]) if job["toward"] else [],
+             "turn": [t for t in after if t not in {str(d) for d in done}]}
     shown = drawn(plan, job, [str(t) for t in done], where or {})
     return Outcome("assigned", job={**job, **local}, drawn=shown)
 
