@@ -50,9 +50,14 @@ def shown(path: Path) -> Path:
         return path
 
 
-def load_machine_file(path: Path) -> MachineFile:
+def check_stem(path: Path) -> None:
+    """A file whose stem is no machine name is refused before it is read (E203, naming the file)."""
     if not is_name(path.stem):
         raise UserError([Finding(str(shown(path)), 1, 1, "E203", stem_problem(path))])
+
+
+def load_machine_file(path: Path) -> MachineFile:
+    check_stem(path)
     doc = read_mapping(shown(path), "a machine")
     model = located.validate(Machine, doc)
     return MachineFile(path.stem, path, doc, model)

@@ -193,10 +193,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--every", type=float, default=60, help="simulated seconds between samples")
     parser.add_argument("--from", dest="source", type=Path, help="rewrite the docs from this results file")
     parser.add_argument("--no-doc", action="store_true")
+    parser.add_argument("--section", help="the docs section and results file's name (default: longrun_RUN)")
     parser.add_argument("--args", dest="extra", type=shlex.split, default=[],
                         help="more hfsm-run arguments, as one string ('--fail r5@10 --radio-loss 0.3')")
     args = parser.parse_args(argv)
-    name = f"longrun_{args.run}"
+    name = args.section or f"longrun_{args.run}"
     raw = RESULTS / f"{name}.json"
     if args.source:
         data = json.loads(args.source.read_text())

@@ -109,3 +109,10 @@ def test_prune_removes_figures_of_machines_that_are_gone(tmp_path: Path) -> None
     (tmp_path / "keep.txt").write_text("x")
     assert main([str(DATA / "lift.yaml"), "-o", str(tmp_path), "--prune", "--no-legend", "--no-overview"]) == 0
     assert sorted(p.name for p in tmp_path.iterdir()) == ["keep.txt", "lift.svg"]
+
+
+def test_a_machine_by_name_and_a_misspelt_one(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["leader", "-o", str(tmp_path), "--format", "dot", "--no-legend", "--no-overview"]) == 0
+    assert (tmp_path / "leader.dot").is_file()
+    assert main(["leadr", "-o", str(tmp_path)]) == 2
+    assert "did you mean 'leader'?" in capsys.readouterr().err

@@ -63,3 +63,28 @@ def test_the_readme_primitive_is_the_code() -> None:
     prim = next(p for p in primitives() if p.spec.name == name.group(1))
     source = Path(prim.fn.__code__.co_filename).read_text(encoding="utf-8")
     assert block in source
+
+
+def names(text: str) -> list[str]:
+    return re.findall(r"^### `(\w+)`", text, flags=re.M)
+
+
+def test_a_pattern_lists_the_behaviours_whose_name_or_world_matches(capsys: pytest.CaptureFixture[str]) -> None:
+    assert names(listing(capsys, "tararc_t")) == ["tararc_task"]
+    assert set(names(listing(capsys, "tararc_*"))) == {n for n in names(listing(capsys)) if n.startswith("tararc_")}
+    sim = names(listing(capsys, "sim"))
+    assert "scan_for_table" in sim and "wait" not in sim and "move_furniture" not in sim
+    text = listing(capsys, "no_such_thing")
+    assert names(text) == [] and "No behaviour's name or world matches 'no_such_thing'" in text
+
+
+def test_the_listing_speaks_to_users(capsys: pytest.CaptureFixture[str]) -> None:
+    text = listing(capsys)
+    assert "regenerate" not in text and ".venv" not in text and "SPEC" not in text and "test fails" not in text
+
+
+def test_with_a_file_the_machines_beside_it_are_listed(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    for name in ("mine", "neighbour"):
+        (tmp_path / f"{name}.yaml").write_text("outcomes: [done]\nstates:\n  a: {do: wait, on: {done: done}}\n")
+    assert main([str(tmp_path / "mine.yaml"), "--list", "neighbour"]) == 0
+    assert names(capsys.readouterr().out) == ["neighbour"]

@@ -199,3 +199,29 @@ def test_fail_exit_makes_a_failure_outcome_exit_3(tmp_path: Path, capsys: pytest
     assert run(capsys, path, "--quiet", *args)[0] == 0  # without the flag a failure outcome is an outcome
     got, _, err = run(capsys, path, "--quiet", "--fail-exit", *args)
     assert got == code and said in err
+
+
+def test_a_machine_by_name_and_a_misspelt_name(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    (tmp_path / "patience.yaml").write_text(PATIENCE)
+    code, _, err = run(capsys, "patience", "--lib", tmp_path, "--check")
+    assert code == 0 and "patience.yaml: ok" in err
+    code, _, err = run(capsys, "patiense", "--lib", tmp_path, "--check")
+    assert code == 2 and "'patiense' is no file here, nor a machine in" in err and "did you mean 'patience'?" in err
+
+
+def test_new_plugin_writes_the_template(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    code, _, err = run(capsys, "--new-plugin", tmp_path / "mine")
+    template = ROOT / "examples" / "plugin_template"
+    made = sorted(p.relative_to(tmp_path / "mine") for p in (tmp_path / "mine").rglob("*") if p.is_file())
+    kept = sorted(p.relative_to(template) for p in template.rglob("*")
+                  if p.is_file() and "__pycache__" not in p.parts and ".egg-info" not in str(p))
+    assert code == 0 and made == kept and "pip install -e" in err
+    code, _, err = run(capsys, "--new-plugin", tmp_path / "mine")
+    assert code == 2 and "already there" in err
+
+
+def test_schema_says_where_the_installed_copy_is(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, err = run(capsys, "--schema")
+    installed = ROOT / "hfsm" / "schemas" / "machine.schema.json"
+    assert code == 0 and json.loads(out) == json.loads(installed.read_text())
+    assert f"# yaml-language-server: $schema={installed}" in err

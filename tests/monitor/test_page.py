@@ -101,6 +101,8 @@ def test_a_live_run_updates_the_page_while_it_goes(page: Any, tmp_path: Path) ->
         first = float(page.inner_text("#time").split()[0])
         page.wait_for_function(f"parseFloat(document.getElementById('time').textContent) > {first}")
         assert page.locator('.agent[data-agent="robot"] summary[data-path^="blink/"]').count() == 1
+        page.wait_for_function("document.getElementById('status').textContent.includes('ended')")
+        assert page.locator('.agent[data-agent="robot"].ended .drawing[data-machine="blink"]').is_visible()
     finally:
         assert run.wait(timeout=30) == 0
 

@@ -99,7 +99,7 @@ def test_the_report_from_results(tmp_path: Path) -> None:
     doc = tmp_path / "TARARC.md"
     lines = write(results, doc, tmp_path / "figures", "tools/tararc_bench.py", 90.0, len(results))
     text = doc.read_text(encoding="utf-8")
-    assert "| (3, 2, 1) | ∞ | ∞ | 0/1 | 0 |" in text and "| (1, 2, 3) | 33.0 | 30.0 | 1/1 | 0 |" in text
+    assert "| (3, 2, 1) | ∞ | ∞ | 0/1 | 0 |" in text and "| (1, 2, 3) | 33.05 | 30.0 | 1/1 | 0 |" in text
     assert "- Priority orders that never finish: 1 of 2 (paper: 1 of 6): [3, 2, 1]." in lines
     assert "(2.0 times as many) the time to group goes from 10.0 s to 20.0 s (2.00 times)" in text
     assert "| agent | 1 | 1/1 | 5.0 |" in text and "| member | 1 | 1/1 | 6.0 |" in text

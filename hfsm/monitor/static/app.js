@@ -45,8 +45,10 @@ function render() {
   slider.max = replay.end; slider.value = page.time;
   $("time").textContent = `${fmt(page.time)} s`;
   drawAgents(replay, page.machines, $("agents"));
-  drawRoom(replay, $("room"), $("room-note"), beliefChoice(replay, $("belief")));
+  drawRoom(replay, $("room"), $("room-note"), beliefChoice(replay, $("belief")), page.live && !page.ended);
   drawSequence(replay, $("sequence"), page.ended);
+  drawMarks(replay, $("marks"));
+  refreshFigure();
   status();
 }
 
@@ -68,5 +70,56 @@ $("back").onclick = () => { pause(); seek(replay.previousTime(page.time)); };
 $("belief").onchange = () => render();
 $("slider").oninput = event => { pause(); $("follow").checked = false; seek(parseFloat(event.target.value)); };
 
+function search() {
+  const hits = findStates($("search").value);
+  const box = $("search-hits");
+  box.hidden = !$("search").value.trim();
+  box.replaceChildren(hits.length ? `${hits.length} found:` : "no state of that name in the figures shown");
+  for (const hit of hits.slice(0, 50)) {
+    const link = document.createElement("button");
+    link.type = "button"; link.className = "hit"; link.textContent = `${hit.agent}: ${hit.key}`;
+    link.onclick = () => { mark(hit.node); hit.node.scrollIntoView({ block: "center" }); };
+    box.append(" ", link);
+  }
+  if (hits.length) { mark(hits[0].node); hits[0].node.scrollIntoView({ block: "center" }); }
+}
+$("search").oninput = search;
+
+function jump(time) { if (time !== null) { pause(); $("follow").checked = false; seek(time); } }
+$("next-mark").onclick = () => jump(nextMark(page.time));
+$("prev-mark").onclick = () => jump(previousMark(page.time));
+$("marks").onclick = event => { if (event.target.dataset.t) jump(parseFloat(event.target.dataset.t)); };
+
+// A click on a state in a figure selects it (for `b`); its path below the top machine.
+$("agents").addEventListener("click", event => {
+  const g = event.target.closest(".drawing g.node");
+  if (!g) return;
+  const block = g.closest("details.block");
+  const name = g.querySelector("title")?.textContent || "";
+  page.selected = [...block.dataset.key.split("/").slice(1), name].join("/");
+  for (const old of document.querySelectorAll("g.node.selected")) old.classList.remove("selected");
+  g.classList.add("selected");
+  $("selected").textContent = `selected: ${page.selected}`;
+});
+
+// Keys: space plays or pauses, arrows step a tick with records, b toggles a breakpoint on the
+// selected state's entry (a live run's controls only).
+document.addEventListener("keydown", event => {
+  if (!$("viewer").hidden && (event.key === "Escape" || event.key === "0")) {
+    (event.key === "Escape" ? closeFigure : () => $("viewer-fit").click())();
+    return;
+  }
+  if (event.target.closest("input, select, textarea") || event.ctrlKey || event.metaKey || event.altKey) return;
+  const act = { " ": () => $("play").click(), ArrowRight: () => $("step").click(), ArrowLeft: () => $("back").click(),
+                n: () => $("next-mark").click(), p: () => $("prev-mark").click(),
+                b: () => page.selected && window.hfsm.toggleBreak && window.hfsm.toggleBreak(`enter:${page.selected}`) }[event.key];
+  if (!act) return;
+  event.preventDefault();
+  act();
+});
+// a focused button would take the space as its own click
+document.addEventListener("keyup", event => { if (event.key === " " && event.target.closest("button")) event.preventDefault(); });
+
+setUpZoom();
 window.hfsm = { replay, seek, page };
 start();

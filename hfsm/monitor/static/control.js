@@ -17,7 +17,7 @@ async function ask(body) {
   return answer.ok;
 }
 
-function showBreaks(breaks) { $("op-breaks").textContent = breaks.length ? `breakpoints: ${breaks.join(", ")}` : ""; }
+function showBreaks(breaks) { operator.breaks = breaks; $("op-breaks").textContent = breaks.length ? `breakpoints: ${breaks.join(", ")}` : ""; }
 
 function heldNow() {
   // the held records whose state has not been left (nor answered) since
@@ -63,5 +63,15 @@ function setUp() {
   setInterval(showHeld, 250);
 }
 
+// Add the breakpoint, or remove it when set (the server only clears all: the others are set again).
+async function toggleBreak(spec) {
+  const breaks = operator.breaks || [];
+  if (!breaks.includes(spec)) return ask({ do: "break", spec });
+  if (!(await ask({ do: "break", spec: "clear" }))) return false;
+  for (const other of breaks.filter(b => b !== spec)) await ask({ do: "break", spec: other });
+  return true;
+}
+
 const waitForMeta = setInterval(() => { if (page.control !== undefined) { clearInterval(waitForMeta); setUp(); } }, 50);
 window.hfsm.ask = ask;
+window.hfsm.toggleBreak = spec => (operator.token && page.control ? toggleBreak(spec) : Promise.resolve(false));

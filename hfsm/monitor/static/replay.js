@@ -10,6 +10,7 @@ class Replay {
     this.agents = new Map();   // name -> {active: Map(key -> entry), mailbox: [], result, failed}
     this.messages = [];        // {t, from, to, message, receipts: [{agent, t}]}
     this.poses = null;         // the latest pose record
+    this.lastKind = null;
   }
 
   add(records) { for (const r of records) this.records.push(r); }
@@ -38,7 +39,7 @@ class Replay {
   }
 
   agent(name) {
-    if (!this.agents.has(name)) this.agents.set(name, { active: new Map(), mailbox: [], result: null, failed: null });
+    if (!this.agents.has(name)) this.agents.set(name, { active: new Map(), mailbox: [], result: null, failed: null, final: null });
     return this.agents.get(name);
   }
 
@@ -46,6 +47,9 @@ class Replay {
     if (r.kind === "pose") { this.poses = r; return; }
     if (r.agent == null) return;  // the run's own records: its flags, a resume, the operator's pause
     const a = this.agent(r.agent);
+    // the states active just before a cascade of exits, kept so an ended agent still shows its figures
+    if ((r.kind === "exit" || r.kind === "failed") && a.lastKind !== "exit" && a.active.size) a.before = new Map(a.active);
+    a.lastKind = r.kind;
     const key = r.path.join("/");
     switch (r.kind) {
       case "enter": {
@@ -53,13 +57,13 @@ class Replay {
         a.active.set(key, { path: r.path, key, t: r.t, do: r.do || (r.path.length === 1 ? r.path[0] : ""),
                             deadline: r.deadline, attempt: 1, vars: previous ? previous.vars : null,
                             machineDeadline: previous ? previous.machineDeadline : undefined });
-        if (r.path.length === 1) { a.result = null; a.failed = null; }
+        if (r.path.length === 1) { a.result = null; a.failed = null; a.final = null; }
         this.frameFacts(a, r);
         break;
       }
       case "exit":
         for (const k of [...a.active.keys()]) if (k === key || k.startsWith(key + "/")) a.active.delete(k);
-        if (r.path.length === 1) a.result = r.outcome === undefined ? null : r.outcome;
+        if (r.path.length === 1) { a.result = r.outcome === undefined ? null : r.outcome; a.final = a.before || null; }
         break;
       case "event": {
         const entry = a.active.get(key);
@@ -82,6 +86,7 @@ class Replay {
       }
       case "failed":
         a.failed = r.reason || "failed";
+        if (a.active.size) a.final = a.before || new Map(a.active);
         a.active.clear();
         break;
       default:
@@ -120,12 +125,26 @@ class Replay {
     return sends;
   }
 
-  // Active entries whose path is `path` plus one name, in the order they were entered.
-  children(agentName, path) {
+  // The states to draw: the active ones, or once the agent has ended those active at its end.
+  shown(agentName) {
     const a = this.agent(agentName);
+    return a.active.size || !a.final ? a.active : a.final;
+  }
+
+  hasPoses() { return this.records.some(r => r.kind === "pose"); }
+
+  // The deepest active path of an agent (the first entered at each depth), for the breadcrumb.
+  activePath(agentName) {
+    let path = [];
+    for (const e of this.shown(agentName).values()) if (e.path.length > path.length) path = e.path;
+    return path;
+  }
+
+  // Shown entries whose path is `path` plus one name, in the order they were entered.
+  children(agentName, path) {
     const depth = path.length;
     const prefix = path.join("/") + "/";
-    return [...a.active.values()].filter(e => e.path.length === depth + 1 && e.key.startsWith(prefix));
+    return [...this.shown(agentName).values()].filter(e => e.path.length === depth + 1 && e.key.startsWith(prefix));
   }
 
   agentNames() {

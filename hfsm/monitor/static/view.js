@@ -15,6 +15,12 @@ function el(tag, attrs = {}, text = "") {
 
 function fmt(seconds) { return (Math.round(seconds * 100) / 100).toFixed(2); }
 
+// A value for people: numbers rounded to 3 decimals (at most 3 significant below 1), at any depth.
+function human(value) {
+  return JSON.stringify(value, (_, v) => (typeof v === "number" && isFinite(v) && !Number.isInteger(v)
+    ? Number(Math.abs(v) >= 1 ? v.toFixed(3) : v.toPrecision(3)) : v));
+}
+
 function drawAgents(replay, machines, container) {
   const names = replay.agentNames();
   for (const column of [...container.children]) if (!names.includes(column.dataset.agent)) column.remove();
@@ -22,7 +28,8 @@ function drawAgents(replay, machines, container) {
     let column = container.querySelector(`.agent[data-agent="${CSS.escape(name)}"]`);
     if (!column) {
       column = el("div", { class: "agent", "data-agent": name });
-      column.append(el("h2", {}, name), el("div", { class: "result" }), el("div", { class: "tree" }),
+      column.append(el("h2", {}, name), el("nav", { class: "crumbs" }), el("div", { class: "result" }),
+                    el("div", { class: "tree" }),
                     el("div", { class: "mailbox" }));
       container.append(column);
     }
@@ -36,9 +43,12 @@ function drawAgent(replay, machines, name, column) {
   const result = a.failed ? `failed: ${a.failed}` : a.result !== null ? `ended in '${a.result}'` : "";
   column.querySelector(".result").textContent = result;
   const tree = column.querySelector(".tree");
-  const roots = [...a.active.values()].filter(e => e.path.length === 1);
-  reconcile(tree, roots.map(e => e.key), key => block(replay, machines, name, a.active.get(key)),
-            (node, key) => updateBlock(replay, machines, name, a.active.get(key), node));
+  const shown = replay.shown(name);
+  column.classList.toggle("ended", shown !== a.active);
+  drawCrumbs(replay.activePath(name), column);
+  const roots = [...shown.values()].filter(e => e.path.length === 1);
+  reconcile(tree, roots.map(e => e.key), key => block(replay, machines, name, shown.get(key)),
+            (node, key) => updateBlock(replay, machines, name, shown.get(key), node));
   const box = column.querySelector(".mailbox");
   box.textContent = a.mailbox.length
     ? "mailbox: " + a.mailbox.map(m => `${m.message} from ${m.sender}`).join(", ") : "mailbox: empty";
@@ -47,6 +57,54 @@ function drawAgent(replay, machines, name, column) {
     box.append(el("div", { class: "barrier-passed" },
                   `last barrier passed at ${fmt(b.t)} s (${b.path.split("/").pop()}), with ${b.arrived.join(", ") || "nobody"}`));
   }
+}
+
+// The agent's active path, top/.../deepest; a click scrolls the deepest state's figure into view.
+function drawCrumbs(path, column) {
+  const crumbs = column.querySelector(".crumbs");
+  const key = path.join("/");
+  if (crumbs.dataset.path === key) return;
+  crumbs.dataset.path = key;
+  crumbs.replaceChildren(...path.flatMap((name, i) => {
+    const link = el("button", { class: "crumb", type: "button", "data-path": path.slice(0, i + 1).join("/") }, name);
+    link.onclick = () => revealState(column, key);
+    return i ? [el("span", { class: "sep" }, "/"), link] : [link];
+  }));
+}
+
+// Scroll to the figure that shows the state at `key` (its lit node in the parent's drawing).
+function revealState(column, key) {
+  const parts = key.split("/");
+  const parent = column.querySelector(`details.block[data-key="${CSS.escape(parts.slice(0, -1).join("/"))}"]`);
+  const own = column.querySelector(`details.block[data-key="${CSS.escape(key)}"]`);
+  const target = (parent && [...parent.querySelectorAll(":scope > .drawing g.node")]
+    .find(g => g.querySelector("title")?.textContent === parts[parts.length - 1])) || own;
+  if (!target) return null;
+  for (let d = target.closest("details"); d; d = d.parentElement.closest("details")) d.open = true;
+  mark(target);
+  target.scrollIntoView({ block: "center" });
+  return target;
+}
+
+function mark(node) {
+  for (const old of document.querySelectorAll(".found")) old.classList.remove("found");
+  node.classList.add("found");
+}
+
+// Every state named like `query` in the figures shown: [{agent, key, name, node}].
+function findStates(query) {
+  const q = query.trim().toLowerCase();
+  if (!q) return [];
+  const hits = [];
+  for (const drawing of document.querySelectorAll("#agents .drawing")) {
+    const block = drawing.closest("details.block");
+    const agent = drawing.closest(".agent").dataset.agent;
+    for (const g of drawing.querySelectorAll("g.node")) {
+      const name = g.querySelector("title")?.textContent || "";
+      if (name.toLowerCase().includes(q)) hits.push({ agent, key: `${block.dataset.key}/${name}`, name, node: g });
+    }
+  }
+  return hits;
 }
 
 // Keep the children of `parent` in step with `keys`: new ones made, old ones removed, kept ones updated.
@@ -77,6 +135,7 @@ function block(replay, machines, agentName, entry) {
   if (svg) {
     const drawing = el("div", { class: "drawing", "data-machine": entry.do });
     drawing.innerHTML = svg;
+    drawing.prepend(el("button", { class: "enlarge", type: "button", title: "open full size (zoom, pan)" }, "\u2922"));
     node.append(drawing);
   }
   node.append(el("table", { class: "vars" }), el("div", { class: "children" }));
@@ -106,8 +165,8 @@ function updateBlock(replay, machines, agentName, entry, node) {
   if (drawing) light(drawing, kids.map(k => k.path[k.path.length - 1]));
   drawVars(node.querySelector(":scope > table.vars"), entry.vars);
   reconcile(node.querySelector(":scope > .children"), kids.map(k => k.key),
-            key => block(replay, machines, agentName, replay.agent(agentName).active.get(key)),
-            (child, key) => updateBlock(replay, machines, agentName, replay.agent(agentName).active.get(key), child));
+            key => block(replay, machines, agentName, replay.shown(agentName).get(key)),
+            (child, key) => updateBlock(replay, machines, agentName, replay.shown(agentName).get(key), child));
 }
 
 function light(drawing, names) {
@@ -122,7 +181,7 @@ function drawVars(table, vars) {
   if (!vars) return;
   for (const [k, v] of Object.entries(vars)) {
     const row = el("tr");
-    row.append(el("td", {}, k), el("td", {}, JSON.stringify(v)));
+    row.append(el("td", {}, k), el("td", {}, human(v)));
     table.append(row);
   }
 }
@@ -189,11 +248,15 @@ function drawBeliefs(replay, ctx, px, scale, names) {
   }
 }
 
-function drawRoom(replay, canvas, note, beliefs = []) {
+function drawRoom(replay, canvas, note, beliefs = [], live = false) {
   const ctx = canvas.getContext("2d");
   ctx.clearRect(0, 0, canvas.width, canvas.height);
   const pose = replay.poses;
-  if (!pose) { note.textContent = "No poses in this trace (a run without the simulator)."; return; }
+  if (!pose) {
+    note.textContent = replay.hasPoses() ? "The room: no pose recorded yet at this time."
+      : live ? "The room: no pose received yet." : "No poses in this trace (a run without the simulator).";
+    return;
+  }
   note.textContent = "";
   const [w, d] = pose.room;
   const scale = (canvas.width - 20) / Math.max(w, d);
