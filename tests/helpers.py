@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+import contextlib
 import importlib.util
 import re
+import signal
 import sys
 import textwrap
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from pathlib import Path
-from types import ModuleType
+from types import FrameType, ModuleType
 from typing import Any
 
 import pytest
@@ -95,3 +97,23 @@ def check_nesting(records: list[dict[str, Any]]) -> None:
             assert not any(p[: len(path)] == path and p != path for p in opened), (opened, record)
             opened.remove(path)
     assert all(not s for s in open_paths.values()), open_paths
+
+
+class Hang(Exception):
+    pass
+
+
+@contextlib.contextmanager
+def watchdog(seconds: int) -> Iterator[None]:
+    """A hang of the code inside becomes the exception Hang after `seconds` (SIGALRM)."""
+
+    def ring(_signum: int, _frame: FrameType | None) -> None:
+        raise Hang(f"no answer within {seconds} s")
+
+    old = signal.signal(signal.SIGALRM, ring)
+    signal.alarm(seconds)
+    try:
+        yield
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, old)

@@ -12,14 +12,13 @@ terminal, and never when NO_COLOR is set (https://no-color.org).
 from __future__ import annotations
 
 import os
-import stat
 from collections.abc import Callable
 from pathlib import Path
 from typing import TextIO
 
-from hfsm.errors import Finding, Severity
+from hfsm.errors import Finding, Severity, UserError
 from hfsm.spans import finding_span
-from hfsm.yamlio import MAX_BYTES
+from hfsm.yamlio import decode, read_bytes
 
 _RED, _YELLOW, _BLUE, _BOLD, _RESET = "\x1b[31m", "\x1b[33m", "\x1b[34m", "\x1b[1m", "\x1b[0m"
 TAB = "    "
@@ -47,13 +46,10 @@ def file_lines() -> Source:
 
 
 def _read(path: Path) -> list[str] | None:
-    """A regular file's lines, never blocking on a FIFO or a device, nor reading a huge file."""
+    """A file's lines as the reader takes them (a regular file, never a FIFO, not over MAX_BYTES)."""
     try:
-        info = path.stat()
-        if not stat.S_ISREG(info.st_mode) or info.st_size > MAX_BYTES:
-            return None
-        return path.read_text(encoding="utf-8").splitlines()
-    except (OSError, UnicodeDecodeError):
+        return decode(read_bytes(path, str(path)), str(path)).splitlines()
+    except UserError:
         return None
 
 

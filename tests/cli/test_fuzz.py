@@ -11,13 +11,10 @@ import contextlib
 import io
 import os
 import re
-import signal
 import tempfile
-from collections.abc import Iterator
 from pathlib import Path
-from types import FrameType
 
-from helpers import finding_lines
+from helpers import finding_lines, watchdog
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -34,27 +31,11 @@ SNIPPETS = ["[", "]", "{", "}", ": ", ":", "- ", "#", "\t", "'", '"', "&a ", "*a
             "? ", "|", ">", "%", "@", "`", ",", "${", "}", "\n", "  ", "<<: ", "~", ".nan", "1e999"]
 
 
-class Hang(Exception):
-    pass
-
-
-@contextlib.contextmanager
-def watchdog() -> Iterator[None]:
-    def ring(signum: int, frame: FrameType | None) -> None:
-        raise Hang(f"no answer within {HANG_S} s")
-
-    old = signal.signal(signal.SIGALRM, ring)
-    signal.alarm(HANG_S)
-    try:
-        yield
-    finally:
-        signal.alarm(0)
-        signal.signal(signal.SIGALRM, old)
 
 
 def hfsm_run(*argv: str) -> tuple[int, str, str]:
     out, err = io.StringIO(), io.StringIO()
-    with watchdog(), contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+    with watchdog(HANG_S), contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
         code = main(list(argv))
     return code, out.getvalue(), err.getvalue()
 

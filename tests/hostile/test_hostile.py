@@ -6,14 +6,13 @@ from __future__ import annotations
 
 import contextlib
 import io
-import signal
 import subprocess
 import sys
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
-from types import FrameType
 
 import pytest
+from helpers import watchdog
 
 from hfsm.cli import graph, monitor, run, test
 from hostile import corpus
@@ -24,27 +23,11 @@ MEMORY_MB = 500
 Main = Callable[[Sequence[str] | None], int]
 
 
-class Hang(Exception):
-    pass
-
-
-@contextlib.contextmanager
-def watchdog() -> Iterator[None]:
-    def alarm(_sig: int, _frame: FrameType | None) -> None:
-        raise Hang(f"no answer within {HANG_S} s")
-
-    old = signal.signal(signal.SIGALRM, alarm)
-    signal.alarm(HANG_S)
-    try:
-        yield
-    finally:
-        signal.alarm(0)
-        signal.signal(signal.SIGALRM, old)
 
 
 def call(main: Main, argv: list[str]) -> tuple[int, str]:
     out, err = io.StringIO(), io.StringIO()
-    with watchdog(), contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+    with watchdog(HANG_S), contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
         code = main(argv)
     return code, err.getvalue() + out.getvalue()
 
@@ -139,7 +122,7 @@ def peak_run(command: list[str], cwd: Path) -> tuple[int, str, float]:
         launcher = subprocess.Popen([sys.executable, "-c", LAUNCH, str(result), *command], stdout=out,
                                     stderr=out, cwd=cwd)
         try:
-            with watchdog():
+            with watchdog(HANG_S):
                 launcher.wait()
         finally:
             if launcher.returncode is None:
