@@ -23,7 +23,7 @@ from hfsm.model import Machine, state_calls
 from hfsm.names import NAME_RULE, did_you_mean, is_name
 from hfsm.registry import Registry
 from hfsm.shadow import assign_keys, rewrite_calls
-from hfsm.yamlio import Document, Path_, read_mapping
+from hfsm.yamlio import Document, Parse, Path_, parse_text, read_mapping
 
 PROJECT_MACHINES = Path(__file__).resolve().parent.parent / "machines"
 SUFFIXES = (".yaml", ".yml")
@@ -73,14 +73,14 @@ def stem_problem(path: Path) -> str:
 
 
 def salvage_machine_file(
-    path: Path, text: str | None = None
+    path: Path, text: str | None = None, parse: Parse = parse_text
 ) -> tuple[MachineFile | None, list[Finding], set[Path_]]:
     """The machine of a file, built from its well-formed part; every problem found on the way; the
     states left out. Raises UserError only when nothing of it can be read (its YAML is broken)."""
     if not is_name(path.stem):
         raise UserError([Finding(str(shown(path)), 1, 1, "E203", stem_problem(path))])
     problems: list[Finding] = []
-    doc = read_mapping(shown(path), "a machine", text=text, kept=problems)
+    doc = read_mapping(shown(path), "a machine", text=text, kept=problems, parse=parse)
     model, findings, removed = salvage.validate(Machine, doc)
     machine = MachineFile(path.stem, path, doc, model) if model is not None else None
     return machine, problems + findings, removed
@@ -99,8 +99,10 @@ class Library:
         registry: Registry,
         libraries: list[Path] | None = None,
         texts: dict[Path, str] | None = None,
+        parse: Parse = parse_text,
     ) -> None:
         self.texts = texts or {}  # files' texts as an editor holds them, by resolved path
+        self.parse = parse
         self.removed: dict[str, set[Path_]] = {}  # by file: states left out, their schema being wrong
         self.users = _unique([p for p in search if libraries is None or p not in libraries])
         self.libraries = _unique(libraries or [])
@@ -112,17 +114,27 @@ class Library:
         self._failed: set[Path] = set()  # files that could not be loaded, reported once
 
     @property
+    def unloaded(self) -> set[Path]:
+        """The files that were called but could not be loaded (resolved paths)."""
+        return set(self._failed)
+
+    @property
     def search(self) -> list[Path]:
         """Every folder, in a user file's order (after its own folder)."""
         return _unique([*self.users, *self.libraries])
 
     @classmethod
     def for_file(
-        cls, top: Path, libs: list[Path], registry: Registry, texts: dict[Path, str] | None = None
+        cls,
+        top: Path,
+        libs: list[Path],
+        registry: Registry,
+        texts: dict[Path, str] | None = None,
+        parse: Parse = parse_text,
     ) -> Library:
         libraries = [PROJECT_MACHINES, *(p.resolve() for p in registry.machine_folders)]
         users = [top.resolve().parent, *(p.resolve() for p in libs)]
-        return cls(users, registry, [p for p in libraries if p not in users], texts)
+        return cls(users, registry, [p for p in libraries if p not in users], texts, parse)
 
     def add_user_folder(self, folder: Path) -> None:
         """Another root's folder (a test run of several files): a user folder after the top file's."""
@@ -178,7 +190,7 @@ class Library:
         if existing is not None or resolved in self._failed:
             return existing
         try:
-            salvaged, findings, removed = salvage_machine_file(path, self.texts.get(resolved))
+            salvaged, findings, removed = salvage_machine_file(path, self.texts.get(resolved), self.parse)
         except UserError as err:
             self.findings.extend(err.findings)
             self._failed.add(resolved)

@@ -13,7 +13,7 @@ from hfsm.library import Library, MachineFile
 from hfsm.model import state_calls
 from hfsm.registry import Registry
 from hfsm.world import NO_INPUTS, InputSpec
-from hfsm.yamlio import collector_paused
+from hfsm.yamlio import Parse, collector_paused, parse_text
 
 
 @dataclass
@@ -88,11 +88,13 @@ def check_files(
     world: str | None = None,
     world_inputs: Mapping[str, Mapping[str, InputSpec]] | None = None,
     texts: dict[Path, str] | None = None,
+    parse: Parse = parse_text,
 ) -> tuple[Library, list[MachineFile], list[Finding]]:
     """Read the files and all they call and run every check: every finding, errors and warnings.
-    `texts`: files' texts as an editor holds them (by resolved path), read instead of the disk's."""
+    `texts`: files' texts as an editor holds them (by resolved path), read instead of the disk's;
+    `parse`: as `hfsm.yamlio.parse_text` (an editor's server reads again only what changed)."""
     registry = registry if registry is not None else Registry()
-    library = Library.for_file(paths[0], libs, registry, texts)
+    library = Library.for_file(paths[0], libs, registry, texts, parse)
     for extra in paths[1:]:
         library.add_user_folder(extra.resolve().parent)
     roots = library.load(paths)

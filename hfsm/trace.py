@@ -109,6 +109,21 @@ class JsonlTrace:
         self._file.close()
 
 
+RECORD_SHAPE = ("an object with a time 't', a 'kind', an 'agent' (null for the run's own) "
+                "and a 'path' of names")
+
+
+def is_record(record: object) -> bool:
+    """Whether `record` has the shape of what `hfsm-run --trace` writes (RECORD_SHAPE)."""
+    if not isinstance(record, dict):
+        return False
+    path, t, agent = record.get("path"), record.get("t"), record.get("agent", "")
+    return (isinstance(path, list) and all(isinstance(p, str) for p in path)
+            and isinstance(t, int | float) and not isinstance(t, bool)
+            and isinstance(record.get("kind"), str)
+            and (agent is None or isinstance(agent, str)))
+
+
 def read_jsonl(path: Path) -> list[dict[str, Any]]:
     with path.open(encoding="utf-8") as f:
         return [json_line(line) for line in f if line.strip()]

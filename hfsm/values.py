@@ -8,7 +8,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from hfsm import bounds
-from hfsm.expr import ExprSyntaxError, Fn, Names, Scope, bounded, compile_expr, short, to_text
+from hfsm.expr import ExprSyntaxError, ExprValueError, Fn, Names, Scope, bounded, compile_expr, short, to_text
 
 
 @dataclass(frozen=True)
@@ -78,16 +78,41 @@ def compile_text(text: str, names: Names) -> Value:
     if len(parts) == 1 and isinstance(parts[0], tuple):
         return Value(compile_expr(parts[0][0], names), False, is_expr=True)
     pieces: list[Callable[[Scope], str]] = []
+    exprs = 0
     for part in parts:
         if isinstance(part, tuple):
-            pieces.append(_as_text(compile_expr(part[0], names)))
+            pieces.append(_as_text(compile_expr(part[0], names), exprs))
+            exprs += 1
         else:
             pieces.append(_literal(part))
     return Value(lambda s: bounded("".join(p(s) for p in pieces)), False)
 
 
-def _as_text(fn: Fn) -> Callable[[Scope], str]:
-    return lambda s: to_text(fn(s))
+def _as_text(fn: Fn, index: int) -> Callable[[Scope], str]:
+    """The `index`-th `${…}` of a text, as text; its index given to an error, for its position."""
+
+    def text(s: Scope) -> str:
+        try:
+            return to_text(fn(s))
+        except ExprValueError as exc:
+            exc.where = (index, *exc.where)
+            raise
+
+    return text
+
+
+def _at(key: str | int, value: Value) -> Callable[[Scope], Any]:
+    """A dict's or a list's item, evaluated; its key given to an error, for its position."""
+    fn = value.fn
+
+    def item(s: Scope) -> Any:
+        try:
+            return fn(s)
+        except ExprValueError as exc:
+            exc.where = (key, *exc.where)
+            raise
+
+    return item
 
 
 def _literal(text: str) -> Callable[[Scope], str]:
@@ -108,10 +133,12 @@ def compile_value(value: Any, names: Names, errors: list[str] | None = None) -> 
         items = {k: compile_value(v, names, errors) for k, v in value.items()}
         if all(v.constant for v in items.values()):
             return Value(lambda s: value, True, value)
-        return Value(lambda s: bounded({k: v.fn(s) for k, v in items.items()}), False)
+        fns = {k: _at(k, v) for k, v in items.items()}
+        return Value(lambda s: bounded({k: fn(s) for k, fn in fns.items()}), False)
     if isinstance(value, list):
         elems = [compile_value(v, names, errors) for v in value]
         if all(v.constant for v in elems):
             return Value(lambda s: value, True, value)
-        return Value(lambda s: bounded([v.fn(s) for v in elems]), False)
+        each = [_at(i, v) for i, v in enumerate(elems)]
+        return Value(lambda s: bounded([fn(s) for fn in each]), False)
     return Value(lambda s: value, True, value)

@@ -16,7 +16,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Protocol
 
 import yaml
 from yaml import events as ev
@@ -243,13 +243,23 @@ def _too_big(file: str, size: int) -> Finding:
     return Finding(file, 1, 1, "E106", message)
 
 
+class Parse(Protocol):
+    def __call__(self, text: str, file: str, *, kept: list[Finding] | None = None) -> Document: ...
+
+
 def read_mapping(
-    path: Path, what: str, *, text: str | None = None, kept: list[Finding] | None = None
+    path: Path,
+    what: str,
+    *,
+    text: str | None = None,
+    kept: list[Finding] | None = None,
+    parse: Parse = parse_text,
 ) -> Document:
-    """Read a file whose top level must be a mapping (`text`: its text, when it is not the disk's)."""
+    """Read a file whose top level must be a mapping (`text`: its text, when it is not the disk's;
+    `parse`: as `parse_text`, e.g. one that reads again only what changed)."""
     file = str(path)
     text = text if text is not None else decode(read_bytes(path, file), file)
-    doc = parse_text(text, file, kept=kept)
+    doc = parse(text, file, kept=kept)
     if not isinstance(doc.data, dict):
         kind = type(doc.data).__name__ if doc.data is not None else "null"
         raise UserError([doc.finding((), "E105", f"expected {what} (a mapping), got {kind}")])

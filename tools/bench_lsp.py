@@ -1,7 +1,9 @@
 """Time `hfsm-lsp` from a change to its diagnostics, on machine files of 500 states (and more).
 
 The server runs as an editor runs it (a process on stdin/stdout); each change replaces the whole
-text, alternately adding and removing a misspelt target, and the time is taken from writing the
+text, alternately adding and removing a misspelt param in the first state (and each text new: a
+comment on that line counts the changes, so no check is answered from a cache of earlier texts), and
+the time is taken from writing the
 change to reading the diagnostics published for it. Rewrites the bench_lsp section of
 docs/PERFORMANCE.md (nothing else in that shared file). Target (issue 24): at most 100 ms on a
 500-state file.
@@ -128,6 +130,7 @@ def measure(states: int, changes: int) -> tuple[list[float], float, float]:
         cpu = server.cpu_seconds()
         for version in range(2, changes + 2):
             changed = text.replace("seconds", "secnds", 1) if version % 2 == 0 else text
+            changed = changed.replace("s1}}\n", f"s1}}}} # change {version}\n", 1)  # never a text seen
             begin = time.perf_counter()
             server.send(
                 "textDocument/didChange",
@@ -149,6 +152,7 @@ def stages(states: int, repeats: int = 10) -> dict[str, float]:
     from hfsm import salvage
     from hfsm.checks import run_checks
     from hfsm.library import MachineFile
+    from hfsm.lsp.reparse import Reparser
     from hfsm.model import Machine
     from hfsm.registry import Registry
     from hfsm.yamlio import parse_text
@@ -162,28 +166,38 @@ def stages(states: int, repeats: int = 10) -> dict[str, float]:
         best[name] = min(best.get(name, 1e9), (time.process_time() - begin) * 1000)
         return result
 
-    for _ in range(repeats):
-        doc = timed("read the YAML", parse_text, text, "m.yaml")
+    reparser = Reparser()
+    reparser.parse(text, "m.yaml")
+    for n in range(repeats):
+        doc = timed("read the whole YAML", parse_text, text, "m.yaml")
+        changed = text.replace("s1}}\n", f"s1}}}} # change {n}\n", 1)
+        timed("read again from the changed state", reparser.parse, changed, "m.yaml")
         model = timed("validate (schema)", salvage.validate, Machine, doc)[0]
         machine = MachineFile("m", Path("m.yaml"), doc, model)
         timed("every check", run_checks, {"m": machine}, registry, {})
     return best
 
 
-def section(rows: list[Row], changes: int, steps: dict[str, float] | None = None) -> list[str]:
+def section(
+    rows: list[Row], changes: int, steps: dict[str, float] | None = None, load_before: float = 0.0
+) -> list[str]:
     load = os.getloadavg()[0]
     lines = [
         "## The language server: from a change to its diagnostics (bench_lsp)",
         "",
         f"Measured by `tools/bench_lsp.py` on {platform.machine()}, {os.cpu_count()} CPUs, Python "
-        f"{platform.python_version()}, {time.strftime('%Y-%m-%d')}; load average {load:.1f} at the end (a "
-        "shared VM).",
+        f"{platform.python_version()}, {time.strftime('%Y-%m-%d')}; load average {load_before:.1f} at the "
+        f"start, {load:.1f} at the end (a shared VM of 2 CPUs).",
         f"Command: `.venv/bin/python tools/bench_lsp.py` ({changes} changes per file). `hfsm-lsp` runs as "
         "editors run it, a process on stdin/stdout; each change sends the whole text, alternately "
-        "misspelling and mending a param's name, and is timed from writing it to reading the diagnostics "
+        "misspelling and mending a param's name in the first state (each text new: a comment on that line "
+        "counts the changes), and is "
+        "timed from writing it to reading the diagnostics "
         "published for it (the file read, every check run over it and its callees, the diagnostics sent). "
         "The file: call states with an expression param and a choice every tenth state, under a machine "
-        "timer.",
+        "timer. A change inside one state reads that state alone and mends the last document "
+        "(`hfsm/lsp/reparse.py`); expression checks are remembered by text; the collector is paused "
+        "during a check.",
         "",
         "| states | median ms | 90th percentile ms | slowest ms | server CPU ms per change (mean) "
         "| first diagnostics after opening, ms |",
@@ -198,12 +212,14 @@ def section(rows: list[Row], changes: int, steps: dict[str, float] | None = None
         )
     small = next((r for r in rows if r[0] == 500), None)
     if small is not None:
-        wall, cpu = statistics.median(small[1]), small[3]
-        met = "**met**" if wall <= TARGET_MS else "**not met** on this machine's load"
+        ordered = sorted(small[1])
+        wall, p90, cpu = statistics.median(ordered), ordered[int(0.9 * (len(ordered) - 1))], small[3]
+        met = "**met**" if p90 <= TARGET_MS else "**not met** on this machine's load"
         lines += [
             "",
             f"- Target: at most {TARGET_MS:.0f} ms from a change to its diagnostics on a 500-state file: "
-            f"median {wall:.0f} ms, {met}; the server's own CPU time per change is {cpu:.0f} ms.",
+            f"median {wall:.0f} ms, 90th percentile {p90:.0f} ms, {met}; the server's own CPU time per "
+            f"change is {cpu:.0f} ms.",
         ]
     lines.append(
         "- The first diagnostics after opening include the server's one-off work (discovering the primitives "
@@ -222,6 +238,7 @@ def main() -> None:
     parser.add_argument("--no-doc", action="store_true", help="print, do not rewrite docs/PERFORMANCE.md")
     args = parser.parse_args()
     rows = []
+    load_before = os.getloadavg()[0]
     for states in (int(s) for s in args.sizes.split(",")):
         times, opened, cpu = measure(states, args.changes)
         rows.append((states, times, opened, cpu))
@@ -229,7 +246,7 @@ def main() -> None:
         print(
             f"{states} states: median {median:.1f} ms, max {max(times):.1f} ms, CPU {cpu:.1f} ms", flush=True
         )
-    lines = section(rows, args.changes, stages(500))
+    lines = section(rows, args.changes, stages(500), load_before)
     if args.no_doc:
         print("\n".join(lines))
     else:

@@ -1,8 +1,9 @@
 """States a second of hfsm-verify on the paper's two-robot handshakes, with stand-ins, and where the
-time goes (copying states in and out as bytes, against running the engine's ticks).
+time goes (keys of states, copying states in and out as bytes, running the engine's ticks).
 
-Rewrites the bench_verify section of docs/VERIFY.md (nothing else in it).
-Usage: nice -n 15 .venv/bin/python tools/bench_verify.py [--no-doc]
+Rewrites the bench_verify section of docs/VERIFY.md (bench_verify_values with --keys values; nothing
+else in it).
+Usage: nice -n 15 .venv/bin/python tools/bench_verify.py [--no-doc] [--runs N] [--keys bytes|values]
 """
 
 from __future__ import annotations
@@ -10,13 +11,14 @@ from __future__ import annotations
 import argparse
 import os
 import platform
+import statistics
 import sys
 import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from hfsm.verify import search, snapshot
+from hfsm.verify import canon, search, snapshot
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from docsection import write_section
@@ -35,6 +37,8 @@ CASES: list[tuple[str, list[str]]] = [
       "--fail", "1"]),
     ("call_off, --loss 1 --fail 1", [str(M / "call_off.yaml"), *PAIR, "--param", "cycle=1", "--loss", "1",
                                      "--fail", "1"]),
+    ("move_furniture, --loss 1 --fail 1, its first 3,000 states",
+     [str(M / "move_furniture.yaml"), *PAIR, "--loss", "1", "--fail", "1", "--max-states", "3000"]),
 ]  # fmt: skip
 
 
@@ -67,14 +71,26 @@ def one(args: list[str]) -> dict[str, Any]:
     import io
     import json
     import tempfile
+    from unittest import mock
 
     from hfsm.cli import verify as verify_cli
 
+    searched = [0.0]
+    explore = search.explore
+
+    def timed_explore(*args: Any) -> Any:
+        start = time.process_time()
+        try:
+            return explore(*args)
+        finally:
+            searched[0] += time.process_time() - start
+
     with (
+        mock.patch.object(search, "explore", timed_explore),
         tempfile.TemporaryDirectory() as folder,
         Timed(snapshot.Snapshots, "dump") as dump,
         Timed(snapshot.Snapshots, "load") as load,
-        Timed(search, "digest") as digest,
+        Timed(canon.Keys, "__call__") as digest,
     ):
         out = io.StringIO()
         cpu = time.process_time()
@@ -82,39 +98,54 @@ def one(args: list[str]) -> dict[str, Any]:
             code = verify_cli.main([*args, "--json", "--out", str(Path(folder) / "ce.jsonl")])
         cpu = time.process_time() - cpu
     verdict: dict[str, Any] = json.loads(out.getvalue())
-    verdict.update(code=code, dump=dump.seconds, load=load.seconds, digest=digest.seconds, cpu=cpu)
+    verdict.update(
+        code=code, dump=dump.seconds, load=load.seconds, key=digest.seconds, cpu=cpu, search_cpu=searched[0]
+    )
     return verdict
 
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--no-doc", action="store_true", help="print only; leave docs/VERIFY.md")
+    parser.add_argument("--runs", type=int, default=5, help="runs of each case (medians are shown)")
+    parser.add_argument("--keys", choices=("bytes", "values"), default="bytes", help="hfsm-verify's --keys")
     args = parser.parse_args()
     rows = []
     for name, case in CASES:
-        v = one(case)
-        spent = v["seconds"] or 1e-9
-        copy = v["dump"] + v["load"] + v["digest"]
+        runs = [one([*case, "--keys", args.keys]) for _ in range(args.runs)]
+        v = runs[0]
+        spent = statistics.median(r["seconds"] or 1e-9 for r in runs)
+        rate = statistics.median(r["states"] / (r["search_cpu"] or 1e-9) for r in runs)
+        cpu = statistics.median(r["search_cpu"] for r in runs)
+        rates = ", ".join(f"{r['states'] / (r['search_cpu'] or 1e-9):,.0f}" for r in runs)
+        share = {
+            k: statistics.median(r[k] / (r["seconds"] or 1e-9) for r in runs) for k in ("key", "dump", "load")
+        }
+        rest = 1 - sum(share.values())
         rows.append(
-            f"| {name} | {v['verdict']} | {v['states']} | {v['seconds']:.2f} | {v['states'] / spent:,.0f} "
-            f"| {v['states'] / v['cpu']:,.0f} "
-            f"| {100 * copy / spent:.0f} % | {100 * (spent - copy) / spent:.0f} % |"
+            f"| {name} | {v['verdict']} | {v['states']} | {spent:.2f} | {v['states'] / spent:,.0f} "
+            f"| {cpu:.2f} | **{rate:,.0f}** ({rates}) "
+            f"| {100 * share['key']:.0f} % | {100 * (share['dump'] + share['load']):.0f} % "
+            f"| {100 * rest:.0f} % |"
         )
         print(rows[-1], flush=True)
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
     lines = [
         "",
-        f"`nice -n 15 .venv/bin/python tools/bench_verify.py` on {platform.python_implementation()} "
-        f"{platform.python_version()}, {os.cpu_count()} cores, load average {load:.1f} when it ended:",
+        f"`nice -n 15 .venv/bin/python tools/bench_verify.py --keys {args.keys}` on "
+        f"{platform.python_implementation()} {platform.python_version()}, {os.cpu_count()} cores, "
+        f"load average {load:.1f} when it ended:",
         "",
-        "| case | verdict | states | seconds | states/s | states/CPU-s (process, load, checks included) "
-        "| copying states | engine and search |",
-        "|---|---|---|---|---|---|---|---|",
+        "| case | verdict | states | seconds (median) | states/s | CPU-s of the search (median) "
+        "| states/CPU-s of the search: median (each run) "
+        "| keys | copies | engine and search |",
+        "|---|---|---|---|---|---|---|---|---|---|",
         *rows,
         "",
     ]
     if not args.no_doc:
-        write_section(ROOT / "docs" / "VERIFY.md", "bench_verify", lines)
+        section = "bench_verify" if args.keys == "bytes" else "bench_verify_values"
+        write_section(ROOT / "docs" / "VERIFY.md", section, lines)
     return 0
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Any
 
 from hfsm.checks.context import CheckContext, call_states, choice_states, parallel_states
@@ -42,15 +43,14 @@ def check_expression(
     """One bare expression, standing at `offset` in the string at `where`: its syntax and names
     (E314, at the characters at fault), then what it reads live (E330, E331)."""
     m = mf.model
-    try:
-        compile_expr(source, Names(m.params, m.vars if place.vars else None))
-    except ExprSyntaxError as exc:
-        ctx.error(mf, where, "E314", str(exc), span=_span(exc, offset))
+    problem = _compile_problem(source, tuple(m.params), tuple(m.vars) if place.vars else None)
+    if problem is not None:
+        ctx.error(mf, where, "E314", str(problem), span=_span(problem, offset))
         return
     if "state" not in source and "machine" not in source and "in" not in source:
         return  # reads nothing live: no need to parse it again
     reported = set()
-    for name, start, end in reads_at(source):
+    for name, start, end in _reads_at(source):
         if name in reported:
             continue
         reported.add(name)
@@ -68,6 +68,24 @@ def check_expression(
             hint = did_you_mean(attr, ctx.inputs)
             message = f"the run's world declares no input 'in.{attr}' (it declares: {declared}){hint}"
             ctx.error(mf, where, "E330", message, span=span)
+
+
+@lru_cache(maxsize=8192)
+def _compile_problem(
+    source: str, params: tuple[str, ...], vars: tuple[str, ...] | None
+) -> ExprSyntaxError | None:
+    """Why the expression does not compile with these names (None: it does). Kept: an editor's
+    server checks the same expressions again on every change."""
+    try:
+        compile_expr(source, Names(params, vars))
+    except ExprSyntaxError as exc:
+        return exc
+    return None
+
+
+@lru_cache(maxsize=8192)
+def _reads_at(source: str) -> tuple[tuple[str, int, int], ...]:
+    return tuple(reads_at(source))
 
 
 def strings_in(where: Where, value: Any) -> Iterator[tuple[Where, str]]:

@@ -11,8 +11,10 @@ import os
 import sys
 from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
 from hfsm.cli import report
+from hfsm.cli.monitor import read_trace
 from hfsm.cli.named import machine_path
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.diagram.dot import to_dot
@@ -25,7 +27,6 @@ from hfsm.errors import UsageError, UserError
 from hfsm.library import SUFFIXES
 from hfsm.load import load
 from hfsm.registry import Registry
-from hfsm.trace import read_jsonl
 
 
 def _formats(text: str) -> list[str]:
@@ -152,33 +153,16 @@ def _figures(args: argparse.Namespace, files: list[Path], registry: Registry) ->
     return figures
 
 
-def _read_trace(path: Path) -> list[dict[str, object]]:
+def _read_trace(path: Path) -> list[dict[str, Any]]:
     try:
-        records = read_jsonl(path)
+        records = read_trace(path)
     except OSError as exc:
         raise UsageError(f"--trace {path}: {exc.strerror or exc}") from exc
-    except ValueError as exc:  # JSONDecodeError and UnicodeDecodeError among them
-        raise UsageError(f"--trace {path}: not a JSON-lines trace ({exc})") from exc
-    for line, record in enumerate(records, start=1):
-        if not _is_record(record):
-            raise UsageError(f"--trace {path}:{line}: not a trace record of hfsm-run --trace")
+    except UsageError as exc:
+        raise UsageError(f"--trace {exc}") from None
     if not records:
         raise UsageError(f"--trace {path}: the trace has no records")
     return [r for r in records if r["agent"] is not None]  # the run's own (its flags, the operator's)
-
-
-def _is_record(record: object) -> bool:
-    if not isinstance(record, dict):
-        return False
-    path, t = record.get("path"), record.get("t")
-    return (
-        isinstance(path, list)
-        and all(isinstance(p, str) for p in path)
-        and isinstance(t, int | float)
-        and not isinstance(t, bool)
-        and isinstance(record.get("kind"), str)
-        and (isinstance(record.get("agent"), str) or record.get("agent") is None)
-    )
 
 
 def write_all(folder: Path, outputs: dict[str, bytes]) -> None:

@@ -13,7 +13,7 @@ from typing import Any
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import UsageError, UserError
 from hfsm.library import PROJECT_MACHINES
-from hfsm.trace import json_line
+from hfsm.trace import RECORD_SHAPE, is_record, json_line
 
 MAX_TRACE_BYTES = 1 << 30
 
@@ -109,20 +109,10 @@ def read_trace(path: Path) -> list[dict[str, Any]]:
                 raise TraceError(f"{path}:{number}:{exc.colno}: not a trace record: {exc.msg}") from None
             except ValueError as exc:
                 raise TraceError(f"{path}:{number}:1: not a trace record: {exc}") from None
-            if not _is_record(record):
-                raise TraceError(f"{path}:{number}:1: not a trace record (an object with a 'path' of names, "
-                                 "a time 't' and an 'agent')")
+            if not is_record(record):
+                raise TraceError(f"{path}:{number}:1: not a trace record ({RECORD_SHAPE})")
             records.append(record)
     return records
-
-
-def _is_record(record: object) -> bool:
-    if not isinstance(record, dict):
-        return False
-    path, t, agent = record.get("path"), record.get("t", 0.0), record.get("agent", "")
-    named = agent is None or isinstance(agent, str)
-    return (isinstance(path, list) and all(isinstance(p, str) for p in path)
-            and isinstance(t, int | float) and not isinstance(t, bool) and named)
 
 
 def top_name(records: list[dict[str, Any]], path: Path) -> str:

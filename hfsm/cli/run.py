@@ -302,7 +302,13 @@ def _print_error(result: RunResult, loaded: Loaded) -> None:
     if result.error_origin and result.error:
         top = loaded.roots[0].name
         found = locate(
-            loaded.machines, top, result.error_origin, result.error, result.error_agent, result.time
+            loaded.machines,
+            top,
+            result.error_origin,
+            result.error,
+            result.error_agent,
+            result.time,
+            result.error_where,
         )
     if found is None:
         print(f"error: {result.error}", file=sys.stderr)

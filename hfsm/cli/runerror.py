@@ -16,18 +16,63 @@ _QUOTED = re.compile(r"in '(.+?)'(?::|$)")
 
 
 def locate(
-    machines: Mapping[str, MachineFile], top: str, origin: str, message: str, agent: str, time: float
+    machines: Mapping[str, MachineFile],
+    top: str,
+    origin: str,
+    message: str,
+    agent: str,
+    time: float,
+    where: Path_ = (),
 ) -> Finding | None:
-    """The finding of an error met by `agent` at `time` in the state at path `origin` (`top/s/...`)."""
+    """The finding of an error met by `agent` at `time` in the state at path `origin` (`top/s/...`):
+    at the expression that failed when `where` (its path in that state's machine file) is known."""
     found = _state(machines, top, origin.split("/")[1:])
     if found is None:
         return None
     machine, path = found
     line, col = machine.doc.pos(path, key=True)
-    expression = _QUOTED.search(message)
-    if expression is not None:
-        line, col = _find_text(machine.doc.file, expression.group(1), line, col)
+    at = _expression(machine, where) if where else None
+    if at is not None:
+        line, col = at
+    else:
+        expression = _QUOTED.search(message)
+        if expression is not None:
+            line, col = _find_text(machine.doc.file, expression.group(1), line, col)
     return Finding(machine.doc.file, line, col, "", f"{agent} at t={time:g} s: {message}")
+
+
+def _expression(machine: MachineFile, where: Path_) -> tuple[int, int] | None:
+    """Where the expression at `where` is written: the value's position, or its `${` (the n-th of
+    the string, when `where` ends with n past the string)."""
+    doc, value, n = machine.doc, machine.doc.data, 0
+    for i, part in enumerate(where):
+        if _has(value, part):
+            value = value[part]
+        elif isinstance(value, str) and isinstance(part, int) and i == len(where) - 1:
+            n, where = part, where[:i]
+            break
+        else:
+            return None
+    start = doc.values.get(tuple(where))
+    if start is None:
+        return None
+    if not isinstance(value, str) or "${" not in value:
+        return start
+    lines = (doc.text or "").splitlines()
+    line, col = start
+    for number in range(line - 1, len(lines)):
+        text, begin = lines[number], (col - 1 if number == line - 1 else 0)
+        while (at := text.find("${", begin)) >= 0:
+            if n == 0:
+                return number + 1, at + 1
+            n, begin = n - 1, at + 2
+    return start
+
+
+def _has(value: object, part: str | int) -> bool:
+    if isinstance(value, dict):
+        return part in value
+    return isinstance(value, list) and isinstance(part, int) and 0 <= part < len(value)
 
 
 def _state(

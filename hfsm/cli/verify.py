@@ -44,6 +44,12 @@ def build_parser() -> argparse.ArgumentParser:
     )
     p.add_argument("--max-states", type=_count, default=1_000_000, metavar="N", help="stop after N states")
     p.add_argument("--max-seconds", type=_seconds, metavar="S", help="stop after S seconds of search")
+    p.add_argument(
+        "--keys",
+        choices=("bytes", "values"),
+        default="bytes",
+        help="a state's key: its copy's bytes (default), or its values with times relative (merges more)",
+    )
     p.add_argument("--goal", choices=["success"], help="every agent that does not fail ends in no failure")
     p.add_argument("--props", type=Path, metavar="FILE", help="properties to prove (docs/VERIFY.md)")
     p.add_argument(
@@ -99,7 +105,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 def _main(args: argparse.Namespace) -> int:
     from hfsm.runtime.run import RunOptions
-    from hfsm.verify.build import bound_of, input_values, read_values, verify_program
+    from hfsm.verify.build import bound_of, input_values, read_values, unobserved, verify_program
     from hfsm.verify.choices import Chooser
     from hfsm.verify.properties import Properties
     from hfsm.verify.props import read_props
@@ -129,7 +135,8 @@ def _main(args: argparse.Namespace) -> int:
     budget.max_seconds = args.max_seconds or budget.max_seconds
     failures = top.model.failure_outcomes
     check = Properties(failures, args.goal == "success", props, bound)
-    result = explore(program, options, budget, check, chooser, inputs)
+    timeless = unobserved(loaded, bool(props and props.left_within)) if args.keys == "values" else None
+    result = explore(program, options, budget, check, chooser, inputs, timeless)
     out = args.out or args.file.with_name(args.file.stem + ".ce.jsonl")
     verdict: dict[str, Any] = {
         "verdict": "ok" if result.exhausted else "bounded",

@@ -29,7 +29,12 @@ class ExprSyntaxError(Exception):
 
 
 class ExprValueError(Exception):
-    """An expression that failed while running: becomes the event `error`."""
+    """An expression that failed while running: becomes the event `error`.
+
+    `where`: in a value of several expressions (a dict, a list, a text with several `${…}`), the
+    keys and indexes down to the string that failed, then the index of its `${…}` among the string's."""
+
+    where: tuple[str | int, ...] = ()
 
 
 class Live(Protocol):

@@ -4,7 +4,7 @@ offers to make it, in place of what the finding underlines."""
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from lsprotocol import types as lsp
 
@@ -26,13 +26,17 @@ def suggestions(message: str) -> list[str]:
 
 
 def quick_fixes(
-    uri: str, lines: Sequence[str], diagnostics: Sequence[lsp.Diagnostic]
+    uri: str,
+    lines: Sequence[str],
+    diagnostics: Sequence[lsp.Diagnostic],
+    inward: Callable[[lsp.Range], lsp.Range] = lambda r: r,
 ) -> list[lsp.CodeAction]:
+    """`inward`: a diagnostic's range (in the client's units) in characters, to read what it covers."""
     actions: list[lsp.CodeAction] = []
     for diagnostic in diagnostics:
-        if diagnostic.source != "hfsm":
-            continue
-        old = _text(lines, diagnostic.range)
+        if diagnostic.source != "hfsm" or diagnostic.related_information:
+            continue  # another tool's, or a callee's errors (their fixes are in the callee's file)
+        old = _text(lines, inward(diagnostic.range))
         for new in suggestions(diagnostic.message):
             if old[:1] in "'\"" and old[:1] and not new.startswith(old[:1]):
                 new = f"{old[0]}{new}{old[0]}"  # keep the quotes the value was written in

@@ -17,11 +17,13 @@ from hfsm import plugins
 from hfsm.checks.context import CheckContext
 from hfsm.cli.quiet import stdout_to_stderr
 from hfsm.errors import Finding, UserError
-from hfsm.library import Library, MachineFile
+from hfsm.library import PROJECT_MACHINES, SUFFIXES, Library, MachineFile, shown
 from hfsm.load import check_files, world_of
+from hfsm.lsp.reparse import Reparser
 from hfsm.registry import Registry
 from hfsm.spec import BehaviourSpec
 from hfsm.world import NO_INPUTS, WORLDS_GROUP, InputSpec, NullWorld
+from hfsm.yamlio import Document, collector_paused, read_mapping
 
 
 def _disk_text(path: Path) -> str | None:
@@ -52,6 +54,7 @@ class Analysis:
     library: Library | None
     registry: Registry
     inputs: Mapping[str, InputSpec] | None
+    doc: Document | None = None  # a test file's, as read (None: it could not be)
 
     @property
     def machine(self) -> MachineFile | None:
@@ -72,10 +75,12 @@ class Analysis:
         return sorted(names)
 
     def files(self) -> set[Path]:
-        """The files this check read: the document and every machine it calls, at any depth."""
+        """The files this check read: the document and every machine it calls, at any depth (those
+        that could not be loaded too)."""
         if self.library is None:
             return {self.path}
-        return {self.path} | {m.path.resolve() for m in self.library.machines.values()}
+        loaded = {m.path.resolve() for m in self.library.machines.values()}
+        return {self.path} | loaded | self.library.unloaded
 
 
 class Workspace:
@@ -86,7 +91,9 @@ class Workspace:
         self.texts: dict[Path, str] = {}
         self.analyses: dict[Path, Analysis] = {}
         self.last_good: dict[Path, MachineFile] = {}  # the latest machine read of each document
+        self.last_tests: dict[Path, Document] = {}  # the latest test file read of each document
         self._registry = registry
+        self.reparser = Reparser()  # a changed document read again from what changed
 
     @cached_property
     def registry(self) -> Registry:
@@ -119,13 +126,17 @@ class Workspace:
         self.texts.pop(path, None)
         self.analyses.pop(path, None)
         self.last_good.pop(path, None)
+        self.last_tests.pop(path, None)
 
     def analyse(self, path: Path) -> Analysis:
         path = path.resolve()
-        analysis = self._test_file(path) if is_test_file(path) else self._machine_file(path)
+        with collector_paused():  # a check builds many objects and frees few, as `load` does
+            analysis = self._test_file(path) if is_test_file(path) else self._machine_file(path)
         self.analyses[path] = analysis
         if analysis.machine is not None:
             self.last_good[path] = analysis.machine
+        if analysis.doc is not None:
+            self.last_tests[path] = analysis.doc
         return analysis
 
     def _machine_file(self, path: Path) -> Analysis:
@@ -134,7 +145,13 @@ class Workspace:
             registry = registry.for_world(self.settings.world)
         try:
             library, _, findings = check_files(
-                [path], self.settings.libs, registry, self.settings.world, self.world_inputs, self.texts
+                [path],
+                self.settings.libs,
+                registry,
+                self.settings.world,
+                self.world_inputs,
+                self.texts,
+                self.reparser.parse,
             )
         except UserError as err:
             return Analysis(path, err.findings, None, registry, None)
@@ -144,9 +161,30 @@ class Workspace:
     def _test_file(self, path: Path) -> Analysis:
         from hfsm.testing.check import full_registry, read_test_file
 
+        registry = full_registry()
         findings: list[Finding] = []
         try:
-            read_test_file(path, full_registry(), text=self.texts.get(path))
+            read_test_file(path, registry, text=self.texts.get(path))
         except UserError as err:
             findings = err.findings
-        return Analysis(path, findings, None, self.registry, None)
+        try:
+            doc = read_mapping(shown(path), "a behaviour test", text=self.texts.get(path))
+        except UserError:
+            return Analysis(path, findings, None, registry, None)
+        return Analysis(path, findings, self._tested(path, doc, registry), registry, None, doc)
+
+    def _tested(self, path: Path, doc: Document, registry: Registry) -> Library:
+        """The machines a test file tests, and all they call, found as `hfsm-test` finds them."""
+        here = path.parent
+        data = doc.data if isinstance(doc.data, dict) else {}
+        settings = [data, *(c for c in (data.get("tests") or {}).values() if isinstance(c, dict))]
+        libs = [here / lib for s in settings for lib in (s.get("lib") or []) if isinstance(lib, str)]
+        library = Library([here, *libs, PROJECT_MACHINES], registry, texts=self.texts)
+        found = []
+        for name in (s.get("machine") for s in settings):
+            if isinstance(name, str):
+                file = here / name if "/" in name or name.endswith(SUFFIXES) else library.find(name)
+                if file is not None and (file.resolve() in self.texts or file.is_file()):
+                    found.append(file)
+        library.load(list(dict.fromkeys(found)))
+        return library

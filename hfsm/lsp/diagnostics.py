@@ -3,10 +3,11 @@ caret underlines (`hfsm.spans`)."""
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 
 from lsprotocol import types as lsp
+from pygls.uris import from_fs_path
 
 from hfsm.errors import Finding, Severity
 from hfsm.spans import finding_span
@@ -32,6 +33,28 @@ def to_diagnostic(finding: Finding, lines: Sequence[str]) -> lsp.Diagnostic:
         severity=severity,
         code=finding.code or None,
         source=SOURCE,
+    )
+
+
+def callee_diagnostic(
+    at: Finding, name: str, errors: list[Finding], lines_of: Callable[[Path], Sequence[str]]
+) -> lsp.Diagnostic:
+    """The caller's diagnostic for a callee's errors (`hfsm.lsp.callees`), each error as related
+    information at its own file's range; `lines_of`: a file's lines, as the editor holds them."""
+    related = []
+    for error in errors:
+        path = Path(error.file).resolve()
+        rng = finding_range(error, lines_of(path))
+        message = f"error[{error.code}]: {error.message}" if error.code else error.message
+        where = lsp.Location(from_fs_path(str(path)) or "", rng)
+        related.append(lsp.DiagnosticRelatedInformation(where, message))
+    return lsp.Diagnostic(
+        range=finding_range(at, lines_of(Path(at.file).resolve())),
+        message=at.message,
+        severity=lsp.DiagnosticSeverity.Error,
+        source=SOURCE,
+        related_information=related,
+        data={"callee": name},
     )
 
 

@@ -18,8 +18,11 @@ from pygls.lsp.server import LanguageServer
 from pygls.uris import from_fs_path, to_fs_path
 
 from hfsm.library import MachineFile
-from hfsm.lsp import actions, completion, diagnostics, hover, navigation
+from hfsm.lsp import actions, completion, diagnostics, hover, navigation, testfile
 from hfsm.lsp.analysis import Analysis, Settings, Workspace, is_test_file
+from hfsm.lsp.callees import callee_errors
+from hfsm.lsp.units import Units
+from hfsm.yamlio import Document
 
 _OURS = re.compile(r"\b(states|outcomes|tests)\s*:")
 
@@ -53,12 +56,40 @@ class HfsmServer(LanguageServer):
         for again in self.state.set_text(path, text):
             self.publish(again, self.state.analyse(again))
 
+    @property
+    def units(self) -> Units:
+        return Units(self.workspace.position_codec)
+
+    def position(self, uri: str, pos: lsp.Position) -> lsp.Position:
+        """A position the client sent, in characters of the document."""
+        return self.units.position_in(self.lines(_path(uri)), pos)
+
+    def range_out(self, uri: str, rng: lsp.Range) -> lsp.Range:
+        """A range in characters of the file at `uri`, in the client's units."""
+        return self.units.range_out(self.lines(_path(uri)), rng)
+
     def publish(self, path: Path, analysis: Analysis) -> None:
         lines = self.lines(path)
         found = [diagnostics.to_diagnostic(f, lines) for f in diagnostics.of_file(analysis.findings, path)]
+        for c in callee_errors(analysis):
+            found.append(diagnostics.callee_diagnostic(c.at, c.name, c.errors, self.lines))
+        units = self.units
+        for diagnostic in found:
+            diagnostic.range = units.range_out(lines, diagnostic.range)
+            for related in diagnostic.related_information or ():
+                related.location.range = self.range_out(related.location.uri, related.location.range)
         self.text_document_publish_diagnostics(
             lsp.PublishDiagnosticsParams(uri=from_fs_path(str(path)) or "", diagnostics=found)
         )
+
+    def test_context(self, uri: str) -> tuple[Analysis, Document, Sequence[str]] | None:
+        """A test file's latest check, its latest well-read text, and its lines now."""
+        path = _path(uri)
+        analysis = self.state.analyses.get(path)
+        doc = self.state.last_tests.get(path)
+        if not is_test_file(path) or analysis is None or doc is None:
+            return None
+        return analysis, doc, self.lines(path)
 
     def context(self, uri: str) -> tuple[Analysis, MachineFile, Sequence[str]] | None:
         """The document's latest check, its latest well-read machine, and its lines now."""
@@ -100,8 +131,12 @@ def build(workspace: Workspace | None = None) -> HfsmServer:  # noqa: C901 (one 
 
     @server.feature(lsp.TEXT_DOCUMENT_HOVER)
     def on_hover(ls: HfsmServer, params: lsp.HoverParams) -> lsp.Hover | None:
-        found = ls.context(params.text_document.uri)
-        return hover.hover(*found, params.position) if found else None
+        uri = params.text_document.uri
+        tests = ls.test_context(uri)
+        if tests is not None:
+            return testfile.hover(*tests, ls.position(uri, params.position))
+        found = ls.context(uri)
+        return hover.hover(*found, ls.position(uri, params.position)) if found else None
 
     @server.feature(lsp.TEXT_DOCUMENT_COMPLETION, lsp.CompletionOptions(trigger_characters=[".", " ", "{"]))
     def on_completion(ls: HfsmServer, params: lsp.CompletionParams) -> lsp.CompletionList:
@@ -110,42 +145,62 @@ def build(workspace: Workspace | None = None) -> HfsmServer:  # noqa: C901 (one 
         if analysis is None:
             return lsp.CompletionList(is_incomplete=False, items=[])
         machine = ls.state.last_good.get(path)
-        items = completion.complete(analysis, machine, ls.lines(path), params.position)
+        lines = ls.lines(path)
+        pos = ls.units.position_in(lines, params.position)
+        if is_test_file(path):
+            items = testfile.complete(analysis, ls.state.last_tests.get(path), lines, pos)
+        else:
+            items = completion.complete(analysis, machine, lines, pos)
         return lsp.CompletionList(is_incomplete=False, items=items)
 
     @server.feature(lsp.TEXT_DOCUMENT_DEFINITION)
     def on_definition(ls: HfsmServer, params: lsp.DefinitionParams) -> lsp.Location | None:
-        return _definition(ls, params.text_document.uri, params.position)
+        uri = params.text_document.uri
+        found = _definition(ls, uri, ls.position(uri, params.position))
+        return lsp.Location(found.uri, ls.range_out(found.uri, found.range)) if found else None
 
     @server.feature(lsp.TEXT_DOCUMENT_REFERENCES)
     def on_references(ls: HfsmServer, params: lsp.ReferenceParams) -> list[lsp.Location]:
         uri = params.text_document.uri
-        return [lsp.Location(u, r) for u, rs in _places(ls, uri, params.position).items() for r in rs]
+        places = _places(ls, uri, ls.position(uri, params.position))
+        return [lsp.Location(u, ls.range_out(u, r)) for u, rs in places.items() for r in rs]
 
     @server.feature(lsp.TEXT_DOCUMENT_RENAME)
     def on_rename(ls: HfsmServer, params: lsp.RenameParams) -> lsp.WorkspaceEdit | None:
-        places = _places(ls, params.text_document.uri, params.position)
+        uri = params.text_document.uri
+        places = _places(ls, uri, ls.position(uri, params.position))
         if not places:
             return None
-        changes = {u: [lsp.TextEdit(r, params.new_name) for r in rs] for u, rs in places.items()}
+        edit = params.new_name
+        changes = {u: [lsp.TextEdit(ls.range_out(u, r), edit) for r in rs] for u, rs in places.items()}
         return lsp.WorkspaceEdit(changes=changes)
 
     @server.feature(lsp.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
     def on_symbols(ls: HfsmServer, params: lsp.DocumentSymbolParams) -> list[lsp.DocumentSymbol]:
         found = ls.context(params.text_document.uri)
-        return navigation.symbols(found[1], found[2]) if found else []
+        return ls.units.symbols_out(found[2], navigation.symbols(found[1], found[2])) if found else []
 
     @server.feature(
         lsp.TEXT_DOCUMENT_CODE_ACTION, lsp.CodeActionOptions(code_action_kinds=[lsp.CodeActionKind.QuickFix])
     )
     def on_code_action(ls: HfsmServer, params: lsp.CodeActionParams) -> list[lsp.CodeAction]:
         uri = params.text_document.uri
-        return actions.quick_fixes(uri, ls.lines(_path(uri)), params.context.diagnostics)
+        lines = ls.lines(_path(uri))
+        units = ls.units
+        return actions.quick_fixes(uri, lines, params.context.diagnostics, lambda r: units.range_in(lines, r))
 
     return server
 
 
 def _definition(ls: HfsmServer, uri: str, pos: lsp.Position) -> lsp.Location | None:
+    tests = ls.test_context(uri)
+    if tests is not None:
+        called = testfile.definition_name(tests[1], tests[2], pos)
+        file = _behaviour_file(tests[0], called) if called else None
+        if file is None:
+            return None
+        begin = lsp.Position(file[1], 0)
+        return lsp.Location(from_fs_path(str(file[0])) or "", lsp.Range(begin, begin))
     found = ls.context(uri)
     if found is None:
         return None

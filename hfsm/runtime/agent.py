@@ -24,7 +24,7 @@ from hfsm.world import World
 class Event:
     """What ends a state: a callee's outcome (with outputs), a timeout, a message, an error, a choice."""
 
-    __slots__ = ("error", "goto", "message", "name", "origin", "outputs", "traceback")
+    __slots__ = ("error", "goto", "message", "name", "origin", "outputs", "traceback", "where")
 
     def __init__(
         self,
@@ -36,6 +36,7 @@ class Event:
         traceback: str = "",
         goto: RState | str | None = None,
         message: Message | None = None,
+        where: tuple[str | int, ...] = (),
     ) -> None:
         self.name = name
         self.outputs = outputs
@@ -44,6 +45,7 @@ class Event:
         self.traceback = traceback
         self.goto = goto
         self.message = message
+        self.where = where  # an error's expression: its path in the machine file of the state at `origin`
 
 
 HELD = Event("held")  # a state entered holds an arc at once: it waits, nothing is taken

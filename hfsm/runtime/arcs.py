@@ -136,7 +136,7 @@ class Arcs(Calls):
         `scope:` read (REFERENCE.md#scopes: what it runs is under it until the state is left); or the error
         either gave, taken once the state is entered."""
         if state.timer is not None:
-            ticks = self._ticks(state.timer, frame)
+            ticks = self._ticks(state.timer, frame, (*state.at, "timer"))
             if ticks.__class__ is Event:
                 return ticks
             frame.state_deadline = self.tick + ticks  # type: ignore[operator]
@@ -148,14 +148,14 @@ class Arcs(Calls):
         return None
 
     def _choose(self, frame: Frame, state: RState) -> Event:
-        for condition, text, target in state.branches:
+        for i, (condition, text, target) in enumerate(state.branches):
             if condition is None:
                 return Event("else", goto=target)
             try:
                 if condition(frame.scope):
                     return Event(text, goto=target)
             except ExprValueError as exc:
-                return Event("error", error=f"in '{text}': {exc}")
+                return Event("error", error=f"in '{text}': {exc}", where=(*state.at, "choose", i, "if"))
         raise AssertionError("a checked choice ends with else")
 
     def _watch(self, frame: Frame, state: RState) -> Event | None:
@@ -168,7 +168,7 @@ class Arcs(Calls):
             try:
                 holds = watch.condition(frame.scope)
             except ExprValueError as exc:
-                return Event("error", error=f"watch '{watch.text}': {exc}")
+                return Event("error", error=f"watch '{watch.text}': {exc}", where=watch.where)
             if holds and watch.target is not state:
                 return Event(watch.text, goto=watch.target)
         return None

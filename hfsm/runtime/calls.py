@@ -13,30 +13,39 @@ from hfsm.runtime.program import RMachine, resolve_params, timer_ticks
 from hfsm.runtime.states import Callee
 from hfsm.spec import is_finite_number, shown
 
+Where = tuple[str | int, ...]
+
 
 class Calls(Cancelling):
-    def _ticks(self, timer: Any, frame: Frame) -> int | Event:
+    def _ticks(self, timer: Any, frame: Frame, where: Where = ()) -> int | Event:
         if timer.__class__ is int:
             return int(timer)
-        seconds = self._seconds(timer, frame, "timer", "a positive number of seconds", zero=False)
+        takes = "a positive number of seconds"
+        seconds = self._seconds(timer, frame, "timer", takes, zero=False, where=where)
         return seconds if isinstance(seconds, Event) else timer_ticks(seconds, self.dt)
 
-    def _seconds(self, expr: Any, frame: Frame, what: str, takes: str, *, zero: bool) -> float | Event:
-        """A span given as an expression, checked: finite, and positive (or zero, if allowed)."""
+    def _seconds(
+        self, expr: Any, frame: Frame, what: str, takes: str, *, zero: bool, where: Where = ()
+    ) -> float | Event:
+        """A span given as an expression, checked: finite, and positive (or zero, if allowed).
+        `where`: the expression's path in the machine file, for an error's position."""
         try:
             seconds = expr(frame.scope)
         except ExprValueError as exc:
-            return Event("error", error=f"{what}: {exc}")
+            return Event("error", error=f"{what}: {exc}", where=(*where, *exc.where) if where else ())
         if not is_finite_number(seconds) or seconds < 0 or (seconds == 0 and not zero):
-            return Event("error", error=f"{what} must be {takes}, not {shown(seconds)}")
+            return Event("error", error=f"{what} must be {takes}, not {shown(seconds)}", where=where)
         return float(seconds)
 
     def _params(self, callee: Callee, frame: Frame) -> dict[str, Any] | Event:
         frame.in_with = True  # `scope.*` in a `with` reads the state's own scope (docs/REFERENCE.md#scopes)
+        given = {}
+        key = ""
         try:
-            given = {k: v.fn(frame.scope) for k, v in callee.with_.items()}
+            for key, value in callee.with_.items():
+                given[key] = value.fn(frame.scope)
         except ExprValueError as exc:
-            return Event("error", error=str(exc))
+            return Event("error", error=str(exc), where=(*callee.at, "with", key, *exc.where))
         finally:
             frame.in_with = False
         params = resolve_params(callee.spec, given)  # type: ignore[arg-type]
@@ -116,7 +125,7 @@ class Calls(Cancelling):
         hand it on."""
         state = frame.state
         while event.name in state.retry_on:
-            times = self._count_of(state.retry_times, frame, "times")
+            times = self._count_of(state.retry_times, frame, "times", (*state.at, "retry", "times"))
             if times.__class__ is Event:
                 return times
             if frame.attempt > times:  # type: ignore[operator]
@@ -131,7 +140,7 @@ class Calls(Cancelling):
                     attempt=frame.attempt + 1,
                     outcome=event.name,
                 )
-            delay = self._delay(state.retry_delay, frame)
+            delay = self._delay(state.retry_delay, frame, (*state.at, "retry", "delay"))
             if delay.__class__ is Event:
                 return delay
             if delay:
@@ -163,19 +172,21 @@ class Calls(Cancelling):
             if frame.state.watches:
                 self.wake = True  # a watch may read what the attempt saved
 
-    def _count_of(self, times: Any, frame: Frame, what: str) -> int | Event:
+    def _count_of(self, times: Any, frame: Frame, what: str, where: Where) -> int | Event:
         if times.__class__ is int:
             return int(times)
         try:
             value = times(frame.scope)
         except ExprValueError as exc:
-            return Event("error", error=f"retry {what}: {exc}")
+            return Event("error", error=f"retry {what}: {exc}", where=where)
         if value.__class__ is not int or value <= 0:
-            return Event("error", error=f"retry times must be a positive whole number, not {value!r}")
+            message = f"retry times must be a positive whole number, not {value!r}"
+            return Event("error", error=message, where=where)
         return int(value)
 
-    def _delay(self, delay: Any, frame: Frame) -> int | Event:
+    def _delay(self, delay: Any, frame: Frame, where: Where) -> int | Event:
         if delay.__class__ is int:
             return int(delay)
-        seconds = self._seconds(delay, frame, "retry delay", "a number of seconds >= 0", zero=True)
+        takes = "a number of seconds >= 0"
+        seconds = self._seconds(delay, frame, "retry delay", takes, zero=True, where=where)
         return seconds if isinstance(seconds, Event) else max(0, self.span(seconds))

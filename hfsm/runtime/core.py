@@ -25,11 +25,19 @@ MAX_ENTRIES = 1000
 class FatalError(Exception):
     """Ends the whole run at once (exit 1): an error at the top, too many entries in one tick."""
 
-    def __init__(self, agent: str, message: str, traceback: str = "", origin: str = "") -> None:
+    def __init__(
+        self,
+        agent: str,
+        message: str,
+        traceback: str = "",
+        origin: str = "",
+        where: tuple[str | int, ...] = (),
+    ) -> None:
         super().__init__(message)
         self.agent = agent
         self.traceback = traceback
         self.origin = origin  # the path of the state (or region) where it happened, when known
+        self.where = where  # the path of the expression that failed, in that state's machine file
 
 
 class Core:
@@ -106,7 +114,7 @@ class Core:
             agent.result = AgentResult(None, {}, self.time)
             self.emit(agent, [agent.top], "exit", outcome=None)
             origin = event.origin or agent.top
-            raise FatalError(agent.name, f"{origin}: {event.error}", event.traceback, origin)
+            raise FatalError(agent.name, f"{origin}: {event.error}", event.traceback, origin, event.where)
         agent.result = AgentResult(event.name, event.outputs or {}, self.time)
         self.emit(agent, [agent.top], "exit", outcome=event.name)
 

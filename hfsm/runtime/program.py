@@ -94,6 +94,7 @@ class Program:
         for name, state in m.states.items():
             rs = rm.states[name]
             rs.error_target = any_error
+            rs.at = ("states", name)
             if isinstance(state, ChoiceState):
                 rs.is_choice = True
                 rs.branches = [
@@ -105,7 +106,9 @@ class Program:
                 continue
             self._arcs(rs, state.on, target, any_msgs, receives)
             rs.timer = self._timer(state.timer, names)
-            self._watches(rs, [*m.watch, *state.watch], names, target)
+            watches: list[tuple[str | int, ...]] = [("watch", i, "if") for i in range(len(m.watch))]
+            watches += [("states", name, "watch", i, "if") for i in range(len(state.watch))]
+            self._watches(rs, list(zip([*m.watch, *state.watch], watches, strict=True)), names, target)
             if state.scope is not None:
                 rs.scope = ScopeCode(
                     compile_value(state.scope.name, names), compile_value(state.scope.agents, names)
@@ -152,12 +155,14 @@ class Program:
                 del rs.msg_arcs[event]
 
     @staticmethod
-    def _watches(rs: RState, watches: list[WatchModel], names: Names, target: Resolve) -> None:
+    def _watches(
+        rs: RState, watches: list[tuple[WatchModel, tuple[str | int, ...]]], names: Names, target: Resolve
+    ) -> None:
         rs.watches = tuple(
-            Watch(compile_expr(w.condition, names), w.condition, target(w.then)) for w in watches
+            Watch(compile_expr(w.condition, names), w.condition, target(w.then), at) for w, at in watches
         )
         rs.timed = any(
-            name in TIMED or name.startswith("in.") for w in watches for name in reads(w.condition)
+            name in TIMED or name.startswith("in.") for w, _ in watches for name in reads(w.condition)
         )
 
     def _retry(self, rs: RState, retry: Retry, names: Names) -> None:
@@ -175,6 +180,7 @@ class Program:
         regions = []
         for i, (name, region) in enumerate(state.parallel.items()):
             rr = RRegion(name, i)
+            rr.at = (*rs.at, "parallel", name)
             self._callee(rr, region, names)
             rr.save = tuple(region.save.items())
             rr.background = region.background

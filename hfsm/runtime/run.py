@@ -30,6 +30,7 @@ class RunResult:
     stats: dict[str, dict[str, BehaviourStats]] = field(default_factory=dict)
     error_agent: str = ""  # who met the error, and the path of the state where (when known)
     error_origin: str = ""
+    error_where: tuple[str | int, ...] = ()  # the failed expression's path in its machine file, when known
 
     @property
     def exit_code(self) -> int:
@@ -74,8 +75,8 @@ def run(program: Program, world: World, options: RunOptions, trace: TraceSink | 
         error = "every agent failed"
     results = {a.name: a.result or AgentResult(None, {}, engine.time) for a in agents}
     stats = {a.name: a.stats for a in agents}
-    who, origin = (fatal.agent, fatal.origin) if fatal is not None else ("", "")
-    return RunResult(results, engine.time, error, tb, stats, who, origin)
+    who, origin, where = (fatal.agent, fatal.origin, fatal.where) if fatal is not None else ("", "", ())
+    return RunResult(results, engine.time, error, tb, stats, who, origin, where)
 
 
 def _loop(

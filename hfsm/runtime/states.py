@@ -14,9 +14,10 @@ from hfsm.values import Value
 class Callee:
     """What a call state or a region calls: its behaviour, how to find it, its `with` and `save`."""
 
-    __slots__ = ("callee", "do", "kind", "params", "save", "spec", "wait_ticks", "with_")
+    __slots__ = ("at", "callee", "do", "kind", "params", "save", "spec", "wait_ticks", "with_")
 
     def __init__(self) -> None:
+        self.at: tuple[str | int, ...] = ()  # its path in its machine file: a state's, or a region's
         self.do = ""
         self.kind = ""  # "machine", "primitive", or the built-in's name
         self.callee: RMachine | Primitive | None = None
@@ -52,12 +53,13 @@ class JoinRule:
 
 
 class Watch:
-    __slots__ = ("condition", "target", "text")
+    __slots__ = ("condition", "target", "text", "where")
 
-    def __init__(self, condition: Fn, text: str, target: RState | str) -> None:
+    def __init__(self, condition: Fn, text: str, target: RState | str, where: tuple[str | int, ...]) -> None:
         self.condition = condition
         self.text = text
         self.target = target
+        self.where = where  # its condition's path in the machine file
 
 
 class RState(Callee):

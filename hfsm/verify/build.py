@@ -3,6 +3,7 @@ the machines named), the values stand-ins output and inputs hold, and the bound.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -100,6 +101,24 @@ def input_values(declared: Mapping[str, Mapping[str, InputSpec]], given: Mapping
             found.setdefault(name, DEFAULTS.get(spec.type, 0))
     found.update(given)
     return found
+
+
+_MACHINE_TIME = re.compile(r"\bmachine\s*\.\s*time\b")
+_STATE_TIME = re.compile(r"\bstate\s*\.\s*time\b")
+
+
+def unobserved(loaded: Loaded, watches_time_in_states: bool) -> frozenset[str]:
+    """The times a frame keeps that no expression of the run reads: when its machine started (read
+    only as `machine.time`) and when its state was entered (`state.time`, and a `left_within`
+    property, `watches_time_in_states`). A state's key leaves them out (`canon`). Found by the
+    words in the files' text, so a mention anywhere (even in a doc) keeps them."""
+    texts = [mf.path.read_text(encoding="utf-8", errors="replace") for mf in loaded.machines.values()]
+    found = set()
+    if not any(_MACHINE_TIME.search(t) for t in texts):
+        found.add("started")
+    if not watches_time_in_states and not any(_STATE_TIME.search(t) for t in texts):
+        found.add("entered")
+    return frozenset(found)
 
 
 def bound_of(top: Any, given: float | None) -> float:

@@ -2,12 +2,26 @@
 
 from __future__ import annotations
 
+import copy
 from collections.abc import Mapping, Sequence
 from typing import Any
 
 from hfsm.primitive import Message
 from hfsm.verify.choices import Decider
 from hfsm.world import NOTICE, InputSpec, NullWorld
+
+
+class Given:
+    """The inputs' values and specs: the same in every state of a search, so shared by them (a
+    state's copy holds a reference to it, `snapshot`)."""
+
+    __slots__ = ("specs", "values")
+
+    def __init__(self, values: Mapping[str, Any]) -> None:
+        self.values = dict(values)
+        self.specs = {
+            n: InputSpec(n, type(v).__name__, "given to hfsm-verify") for n, v in self.values.items()
+        }
 
 
 class ChoosingWorld(NullWorld):
@@ -17,10 +31,16 @@ class ChoosingWorld(NullWorld):
     name = "none"
 
     def __init__(
-        self, decider: Decider, loss: int, delay: int, fail: int, inputs: Mapping[str, Any] | None = None
+        self,
+        decider: Decider,
+        loss: int,
+        delay: int,
+        fail: int,
+        inputs: Mapping[str, Any] | Given | None = None,
     ) -> None:
         super().__init__()
-        self.values = dict(inputs or {})  # in.NAME: one value for the whole run, for every agent
+        # in.NAME: one value for the whole run, for every agent
+        self.given = inputs if isinstance(inputs, Given) else Given(inputs or {})
         self.decider = decider
         self.loss = loss
         self.delay = delay
@@ -31,10 +51,11 @@ class ChoosingWorld(NullWorld):
         self.flying: list[tuple[int, int, Message]] = []  # (tick it arrives in, order, message)
 
     def inputs(self) -> Mapping[str, InputSpec]:
-        return {n: InputSpec(n, type(v).__name__, "given to hfsm-verify") for n, v in self.values.items()}
+        return self.given.specs
 
     def read_input(self, agent: str, name: str, tick: int) -> Any:
-        return self.values[name]
+        value = self.given.values[name]
+        return copy.deepcopy(value) if isinstance(value, list | dict) else value  # every state's own
 
     def post(self, message: Message) -> None:
         options: list[dict[str, Any]] = [{"delay": d} for d in range(self.delay + 1)]

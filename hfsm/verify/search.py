@@ -7,6 +7,7 @@ so the first violation found is one of the shortest (fewest ticks in which somet
 
 from __future__ import annotations
 
+import gc
 import math
 import random
 import time
@@ -18,9 +19,10 @@ from typing import Any
 from hfsm.runtime.engine import Engine
 from hfsm.runtime.program import Program
 from hfsm.runtime.run import RunOptions
+from hfsm.verify.canon import Keys
 from hfsm.verify.choices import Choice, Chooser
-from hfsm.verify.radio import ChoosingWorld
-from hfsm.verify.snapshot import Snapshots, digest, shared_objects
+from hfsm.verify.radio import ChoosingWorld, Given
+from hfsm.verify.snapshot import Snapshots, digest, shared_numbers, shared_objects
 from hfsm.verify.step import Ended, first_state, next_state
 
 # A property looked at after each tick: a violation as (kind, agent, text), or None.
@@ -28,6 +30,8 @@ Check = Callable[[Engine, "Ended | None"], "tuple[str, str, str] | None"]
 
 
 _RNG = random.Random(0)
+GC_YOUNG = 100_000  # allocations between two young collections while searching (CPython's: 700)
+LIVE = 20_000  # with keys by value, states queued as engines too: the first successor runs on it
 
 
 @dataclass
@@ -71,27 +75,50 @@ def explore(
     check: Check,
     chooser: Chooser,
     inputs: dict[str, Any],
+    unobserved: frozenset[str] | None = None,
 ) -> Outcome:
-    """Search from tick 0; `program`'s stand-ins must ask `chooser`."""
-    search = _Search(program, budget, check, chooser)
+    """Search from tick 0; `program`'s stand-ins must ask `chooser`. A state's key is the hash of
+    its copy's bytes, or with `unobserved` (a frame's times that nothing reads, `build.unobserved`)
+    written by value (`canon.Keys`, docs/VERIFY.md)."""
+    given = Given(inputs)
+    search = _Search(program, budget, check, chooser, given, unobserved)
+    threshold = gc.get_threshold()
+    gc.collect()
+    gc.freeze()  # the program and everything loaded before: never scanned again while states churn
+    gc.set_threshold(GC_YOUNG, *threshold[1:])
     try:
-        return search.run(lambda: _first(program, options, chooser, budget, inputs))
+        return search.run(lambda: _first(program, options, chooser, budget, given))
     finally:
+        gc.set_threshold(*threshold)
+        gc.unfreeze()
         search.snaps.close()
 
 
 class _Search:
-    def __init__(self, program: Program, budget: Budget, check: Check, chooser: Chooser) -> None:
+    def __init__(
+        self,
+        program: Program,
+        budget: Budget,
+        check: Check,
+        chooser: Chooser,
+        given: Given,
+        unobserved: frozenset[str] | None = None,
+    ) -> None:
         self.started = time.perf_counter()
         self.budget = budget
         self.check = check
         self.chooser = chooser
-        self.snaps = Snapshots(shared_objects([program, chooser, program.registry, _RNG]))
+        shared = shared_objects([program, chooser, program.registry, _RNG, given])
+        self.snaps = Snapshots(shared)
+        self.key = None if unobserved is None else Keys(shared_numbers(shared), unobserved=unobserved)
+        self.live_cap = 0 if self.key is None else LIVE  # a copy's bytes are no key once run again
         self.result = Outcome()
         self.nodes: list[_Node] = []
-        self.seen: set[bytes] = set()
+        self.seen: dict[bytes, int] = {}  # a state's key: the latest tick it was explored at
+        self.explored = 0  # states queued (a key again at a later tick is explored again)
         self.ends = 0  # runs that ended (each a state of its own, never hashed)
-        self.queue: deque[tuple[int, bytes]] = deque()
+        self.queue: deque[tuple[int, bytes, Engine | None]] = deque()
+        self.live = 0  # engines in the queue
 
     def run(self, first: Callable[[], tuple[Engine, Ended | None]]) -> Outcome:
         for engine, ended in _all_prefixes(self.chooser, first):
@@ -99,14 +126,19 @@ class _Search:
                 return self.done(False)
         chooser, snaps, last = self.chooser, self.snaps, self.budget.last_tick
         while self.queue:
-            if len(self.seen) >= self.budget.max_states or self._late():
+            if self.explored >= self.budget.max_states or self._late():
                 return self.done(False)
-            index, data = self.queue.popleft()
+            index, data, live = self.queue.popleft()
+            if live is not None:
+                self.live -= 1
             pending: list[tuple[int, ...]] = [()]
             while pending:
                 chooser.begin(pending.pop())
-                engine = snaps.load(data)
-                ended = next_state(engine, engine.world, chooser, last)
+                if live is not None:  # the state itself, unused yet: no copy to make
+                    engine, live = live, None
+                else:
+                    engine = snaps.load(data)
+                ended = next_state(engine, engine.world, chooser, last)  # type: ignore[arg-type]
                 pending.extend(chooser.siblings())
                 if not self.visit(engine, ended, index):
                     return self.done(False)
@@ -130,27 +162,38 @@ class _Search:
         if ended is not None or engine.running == 0:
             self.ends += 1
             return True
-        data = self.snaps.dump(engine)
-        key = digest(data)
-        if key in self.seen:
-            return True
-        self.seen.add(key)
+        if self.key is None:
+            data = self.snaps.dump(engine)
+            key = digest(data)
+        else:
+            key = self.key(engine)
+        explored = self.seen.get(key)
+        if explored is not None and explored >= engine.tick:
+            return True  # the same situation, as late or later: its runs cover this one's (docs/VERIFY.md)
+        self.seen[key] = engine.tick
+        self.explored += 1
+        if self.key is not None:
+            data = self.snaps.dump(engine)
         self.nodes.append(_Node(parent, made))
-        self.queue.append((len(self.nodes) - 1, data))
+        if self.live < self.live_cap:
+            self.live += 1
+            self.queue.append((len(self.nodes) - 1, data, engine))
+        else:
+            self.queue.append((len(self.nodes) - 1, data, None))
         return True
 
     def done(self, exhausted: bool) -> Outcome:
         result = self.result
-        result.states = len(self.seen) + self.ends
+        result.states = self.explored + self.ends
         result.exhausted = exhausted
         result.seconds = time.perf_counter() - self.started
         return result
 
 
 def _first(
-    program: Program, options: RunOptions, chooser: Chooser, budget: Budget, inputs: dict[str, Any]
+    program: Program, options: RunOptions, chooser: Chooser, budget: Budget, given: Given
 ) -> tuple[Engine, Ended | None]:
-    world = ChoosingWorld(chooser, budget.loss, budget.delay, budget.fail, inputs)
+    world = ChoosingWorld(chooser, budget.loss, budget.delay, budget.fail, given)
     made = first_state(program, options, chooser, world)
     if isinstance(made, Ended):
         return Engine([], world, program.dt, None), made

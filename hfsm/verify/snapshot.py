@@ -51,6 +51,12 @@ def shared_objects(roots: Iterable[Any]) -> dict[int, Any]:
     return found
 
 
+def shared_numbers(shared: dict[int, Any]) -> dict[int, int]:
+    """The objects a state's key writes as a number (`canon`): those `Snapshots` shares."""
+    objects = [o for o in shared.values() if not isinstance(o, _CONTAINERS) and not callable(o)]
+    return {id(o): i for i, o in enumerate(objects)}
+
+
 class Snapshots:
     """Dumps and loads engines, sharing the objects given (but containers and functions: those a
     state holds are copied, and a state holds no function)."""

@@ -99,10 +99,13 @@ class _Uncounted:
 
 
 def _forget(engine: Engine) -> None:
-    """What does not change what can happen next: statistics and caches (so equal states hash equal)."""
+    """What does not change what can happen next: statistics and caches (none copied with a state)."""
     engine.spans.clear()
     for agent in engine.agents:
         agent.stats.clear()
+        inputs = agent.inputs
+        inputs._declared = None  # read again from the world when asked
+        inputs._tick = -1
 
 
 def running(agents: Sequence[Agent]) -> list[Agent]:

@@ -86,10 +86,10 @@ def test_bad_arguments_exit_2(tmp_path: Path, capsys: pytest.CaptureFixture[str]
     bad_trace = tmp_path / "t.jsonl"
     bad_trace.write_text("not json\n")
     assert main([str(DATA / "lift.yaml"), "-o", str(tmp_path / "o"), "--trace", str(bad_trace)]) == 2
-    assert "not a JSON-lines trace" in capsys.readouterr().err
+    assert "t.jsonl:1:1: not a trace record: Expecting value" in capsys.readouterr().err
     bad_trace.write_text('[1, 2]\n{"t": "x", "agent": "a", "path": [], "kind": "enter"}\n')
     assert main([str(DATA / "lift.yaml"), "-o", str(tmp_path / "o"), "--trace", str(bad_trace)]) == 2
-    assert "t.jsonl:1: not a trace record" in capsys.readouterr().err
+    assert "t.jsonl:1:1: not a trace record" in capsys.readouterr().err
     assert main([str(DATA / "lift.yaml"), "-o", str(tmp_path / "o"), "--trace", str(tmp_path / "none")]) == 2
     assert not (tmp_path / "o").exists()
     for args in (["--format", "gif"], ["--depth", "-1"]):

@@ -78,7 +78,7 @@ def test_a_run_time_error_names_the_file_line_and_column_the_agent_and_the_time(
     assert main(["index_error.yaml", "--world", "none", "--quiet"]) == 1
     first = capsys.readouterr().err.splitlines()[0]
     assert first.startswith(
-        "index_error.yaml:4:3: error: robot at t=0 s: index_error/first: cannot take [5] of list"
+        "index_error.yaml:6:22: error: robot at t=0 s: index_error/first: cannot take [5] of list"
     )
 
 

@@ -30,6 +30,10 @@ CORRECT = [
 ]
 
 
+KEYS = ["bytes", "values"]  # a state's key: its copy's bytes, or its values (docs/VERIFY.md, *States*)
+
+
+@pytest.mark.parametrize("keys", KEYS)
 @pytest.mark.parametrize(("name", "base", "trigger", "kind"), BUGGY, ids=[f"{b[0]}-{b[3]}" for b in BUGGY])
 def test_a_planted_bug_is_found_only_under_its_choice(
     capsys: pytest.CaptureFixture[str],
@@ -38,8 +42,10 @@ def test_a_planted_bug_is_found_only_under_its_choice(
     base: list[str],
     trigger: list[str],
     kind: str,
+    keys: str,
 ) -> None:
     file = DATA / f"{name}.yaml"
+    base = [*base, "--keys", keys]
     code, clean = verify(capsys, file, *base, out=tmp_path / "none.jsonl")
     assert (code, clean["verdict"], clean["exhausted"]) == (0, "ok", True), clean["stderr"]
     code, found = verify(capsys, file, *base, *trigger, out=tmp_path / "ce.jsonl")
@@ -49,11 +55,12 @@ def test_a_planted_bug_is_found_only_under_its_choice(
     assert (tmp_path / "again.jsonl").read_bytes() == (tmp_path / "ce.jsonl").read_bytes()
 
 
+@pytest.mark.parametrize("keys", KEYS)
 @pytest.mark.parametrize(("name", "args"), CORRECT, ids=[f"{c[0]}-{'-'.join(c[1][2:])}" for c in CORRECT])
 def test_a_correct_machine_is_proved(
-    capsys: pytest.CaptureFixture[str], tmp_path: Path, name: str, args: list[str]
+    capsys: pytest.CaptureFixture[str], tmp_path: Path, name: str, args: list[str], keys: str
 ) -> None:
-    code, verdict = verify(capsys, DATA / f"{name}.yaml", *args, out=tmp_path / "ce.jsonl")
+    code, verdict = verify(capsys, DATA / f"{name}.yaml", *args, "--keys", keys, out=tmp_path / "ce.jsonl")
     assert (code, verdict["verdict"], verdict["kind"], verdict["exhausted"]) == (0, "ok", None, True), verdict
     assert verdict["states"] > 1
     assert not (tmp_path / "ce.jsonl").exists()

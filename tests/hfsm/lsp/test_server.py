@@ -248,3 +248,46 @@ async def test_a_test_file_gets_hfsm_tests_findings(client: LanguageClient, tmp_
         ("T303", 3, 13, "'fetch' has no param 'trys'; did you mean 'tries'?"),
         ("T321", 4, 22, "'fetch' has no outcome 'gott'; did you mean 'got'?"),
     ]
+
+
+@pytest.mark.asyncio(loop_scope="module")
+async def test_a_callees_errors_are_shown_at_the_callers_do_with_each_as_related_information(
+    client: LanguageClient, tmp_path: Path
+) -> None:
+    (tmp_path / "fetch.yaml").write_text(
+        "outcomes: [got, lost]\nstates:\n  try:\n    do: wiat\n    on: {done: got, error: lost}\n"
+    )
+    broken = "outcomes: [done]\nstates: {a: {do: wait, on: {done: done}\n"
+    (tmp_path / "broke.yaml").write_text(broken)
+    caller = tmp_path / "caller.yaml"
+    caller.write_text(
+        "outcomes: [done, failed]\nstates:\n  get:\n    do: fetch\n    on: {got: next, lost: failed}\n"
+        "  next: {do: broke, on: {done: done}}\n"
+    )
+    found = await open_file(client, caller)
+    assert [(d.range.start.line, d.range.start.character, d.range.end.character, d.code) for d in found] == [
+        (3, 8, 13, None),
+        (5, 13, 18, None),
+    ]
+    assert found[0].message.startswith("'fetch' has 1 error: first at ")
+    assert found[0].message.endswith("fetch.yaml:4:9: unknown behaviour 'wiat'; did you mean 'wait'?")
+    related = found[0].related_information or []
+    assert [(r.location.uri, r.location.range.start.line, r.location.range.start.character) for r in related] == [
+        (uri(tmp_path / "fetch.yaml"), 3, 8)
+    ]
+    assert related[0].message == "error[E300]: unknown behaviour 'wiat'; did you mean 'wait'?"
+    assert found[1].message.startswith("'broke' has 1 error: first at ") and "never closed" in found[1].message
+    actions = await client.text_document_code_action_async(
+        lsp.CodeActionParams(
+            lsp.TextDocumentIdentifier(uri(caller)),
+            lsp.Range(lsp.Position(0, 0), lsp.Position(6, 0)),
+            lsp.CodeActionContext(diagnostics=found),
+        )
+    )
+    assert not actions  # the fixes are the callee's, in its own file
+    callee = tmp_path / "broke.yaml"
+    await open_file(client, callee)
+    client.diagnostics.pop(uri(caller), None)
+    change(client, callee, broken.replace("done}\n", "done}}}\n"), 2)
+    again = await diagnostics_of(client, caller)
+    assert [d.range.start.line for d in again] == [3]
