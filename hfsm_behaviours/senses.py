@@ -22,6 +22,7 @@ def _degrees(radians: float) -> float:
     return round(math.degrees(float(radians)), 6)
 
 
+SHOWN = ("pose", "tables_in_view")  # inputs whose last reading the trace carries (the monitor draws them)
 LIGHT_BLIND = ("table_in_view", "table_bearing", "table_distance", "tables_in_view", "partner_in_view",
                "hand_give_left", "hand_give_right")
 
@@ -34,6 +35,7 @@ class Senses:
         self.own_colour = own_colour  # the index of its own body colour: it never sees itself
         self.tasks = tasks or []
         self._tick = -1
+        self.last: dict[str, tuple[int, Any]] = {}  # input -> (tick, value) of its last reading, for SHOWN
         self._image: np.ndarray | None = None
         self._table: Blob | None = None
         self.readers: dict[str, Callable[[], Any]] = {
@@ -61,7 +63,10 @@ class Senses:
     def read(self, name: str, tick: int) -> Any:
         if tick != self._tick:
             self._tick, self._image, self._table = tick, None, None
-        return self.readers[name]()
+        value = self.readers[name]()
+        if name in SHOWN:
+            self.last[name] = (tick, value)
+        return value
 
     def image(self) -> np.ndarray:
         if self._image is None:

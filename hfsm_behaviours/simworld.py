@@ -164,7 +164,18 @@ class SimWorld:
         if tick % max(1, round(POSE_EVERY / self.dt)):
             return []
         return [{"t": round(tick * self.dt, 9), "agent": "world", "path": [], "kind": "pose",
-                 **self.world.poses()}]
+                 **self.world.poses(), "sensed": self._sensed()}]
+
+    def _sensed(self) -> dict[str, dict[str, Any]]:
+        """What each robot last sensed (`senses.SHOWN`, in its own start frame, with the tick it was
+        read) and where it was told it started: what it believes, drawn beside the truth."""
+        out: dict[str, dict[str, Any]] = {}
+        for name, senses in sorted(self._senses.items()):
+            start = self.world.scenario.told_start(name)
+            out[name] = {"start": [start["x"], start["y"], start["yaw"]],
+                         **{k: {"t": round(t * self.dt, 9), "value": v}
+                            for k, (t, v) in sorted(senses.last.items())}}
+        return out
 
     def label_sink(self) -> Labels | None:
         """A trace sink that labels each robot in the video with its role and current behaviour; None

@@ -16,6 +16,7 @@ from hfsm_sim.odometry import Odometry, wrap
 from hfsm_sim.profile import MotionProfile
 
 LEASH_XY, LEASH_YAW = 0.02, 0.1
+SCAN_NOISE = 0.01  # metres, 1 sigma, on each range (a Hokuyo's is ~1-3 cm)
 UNWIND_XY, UNWIND_YAW = 0.01, 0.05
 
 Pose = tuple[float, float, float]
@@ -36,6 +37,16 @@ class Chassis:
     max_force: float
 
 
+@dataclass(frozen=True)
+class Scanner:
+    """A body's laser range finder: the height its beams sweep, how far from the body's centre they
+    start (outside its own body) and its own seeded noise."""
+
+    height: float
+    inner: float
+    rng: np.random.Generator
+
+
 class Base:
     """Commands are held until changed; all readings are what the robot itself could sense."""
 
@@ -54,6 +65,7 @@ class Base:
         self._battery = battery
         self._last_xy = pose[:2]
         self.failed = False
+        self._scanner: Scanner | None = None
 
     def set_velocity(self, forward: float, sideways: float, turn: float) -> None:
         """Walk velocity in the body frame (m/s forward, m/s to the left, rad/s counter-
@@ -90,6 +102,29 @@ class Base:
     def bumped(self) -> bool:
         """True if the body touched something during the last `World.advance`."""
         return self._bumped
+
+    def scan(self, beams: int, reach: float) -> list[float]:
+        """A laser range finder sweeping the full turn at its height: `beams` ranges in metres from the
+        body's centre, beam k at k/beams of a turn counter-clockwise from straight ahead, each with
+        seeded noise; `reach` where a beam hits nothing within `reach`. It sees whatever stands at its
+        height alike (ray casts against the world). A failed body, or one with no range finder,
+        senses nothing."""
+        scanner = self._scanner
+        if self.failed or beams <= 0 or scanner is None:
+            return []
+        x, y, yaw = self._true_pose()
+        inner = scanner.inner
+        angles = yaw + np.arange(beams) * (2 * math.pi / beams)
+        c, s = np.cos(angles), np.sin(angles)
+        height = np.full(beams, scanner.height)
+        starts = np.stack([x + c * inner, y + s * inner, height], axis=1).tolist()
+        ends = np.stack([x + c * reach, y + s * reach, height], axis=1).tolist()
+        hits = p.rayTestBatch(starts, ends, numThreads=1, physicsClientId=self._cid)
+        body = np.fromiter((h[0] for h in hits), dtype=int, count=beams)
+        fraction = np.fromiter((h[2] for h in hits), dtype=float, count=beams)
+        noise = scanner.rng.normal(0.0, SCAN_NOISE, beams)
+        ranges = np.minimum(reach, inner + fraction * (reach - inner) + noise).round(4)
+        return [float(r) for r in np.where(body < 0, reach, ranges)]
 
     # called by World
     def _true_pose(self) -> Pose:

@@ -13,7 +13,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 import pybullet as p
 
-from hfsm_sim.base import Base, Chassis, Pose
+from hfsm_sim.base import Base, Chassis, Pose, Scanner
 from hfsm_sim.battery import Battery
 from hfsm_sim.profile import MotionProfile
 
@@ -30,7 +30,6 @@ class LightGeometry:
 LIGHT_BODY = LightGeometry()
 FLOOR_TOP = 0.05  # a body whose bounding box ends below this height is the floor
 SCAN_HEIGHT = 0.2  # metres above the floor the range finder's beams sweep
-SCAN_NOISE = 0.01  # metres, 1 sigma, on each range (a Hokuyo's is ~1-3 cm)
 LIGHT_MOTION = MotionProfile(forward_max=0.5, backward_max=0.5, sideways_max=0.5, turn_max=2.0)
 
 
@@ -74,7 +73,8 @@ class LightRobot(Base):
     def __init__(self, cid: int, name: str, chassis: Chassis, motion: MotionProfile,
                  rng: np.random.Generator, told_start: Pose, battery: Battery | None = None) -> None:
         super().__init__(cid, name, chassis, motion, rng, battery, told_start)
-        self._scan_rng = np.random.default_rng(rng.integers(2**32))
+        noise = np.random.default_rng(rng.integers(2**32))
+        self._scanner = Scanner(SCAN_HEIGHT, LIGHT_BODY.radius + 0.01, noise)
 
     def holding(self) -> bool:
         """A light body has no hands."""
@@ -101,27 +101,6 @@ class LightRobot(Base):
                 found.append((nearest[8], nearest[6][0] - x, nearest[6][1] - y))
         c, s = math.cos(yaw), math.sin(yaw)
         return [(c * dx + s * dy, -s * dx + c * dy) for _, dx, dy in sorted(found)]
-
-    def scan(self, beams: int, reach: float) -> list[float]:
-        """A laser range finder sweeping the full turn at `SCAN_HEIGHT`: `beams` ranges in metres from
-        the body's centre, beam k at k/beams of a turn counter-clockwise from straight ahead, each
-        with seeded noise; `reach` where a beam hits nothing within `reach`. It sees walls, tables'
-        legs and other robots alike (ray casts against the world). A failed body senses nothing."""
-        if self.failed or beams <= 0:
-            return []
-        x, y, yaw = self._true_pose()
-        inner = LIGHT_BODY.radius + 0.01
-        angles = yaw + np.arange(beams) * (2 * math.pi / beams)
-        c, s = np.cos(angles), np.sin(angles)
-        height = np.full(beams, SCAN_HEIGHT)
-        starts = np.stack([x + c * inner, y + s * inner, height], axis=1).tolist()
-        ends = np.stack([x + c * reach, y + s * reach, height], axis=1).tolist()
-        hits = p.rayTestBatch(starts, ends, numThreads=1, physicsClientId=self._cid)
-        body = np.fromiter((h[0] for h in hits), dtype=int, count=beams)
-        fraction = np.fromiter((h[2] for h in hits), dtype=float, count=beams)
-        noise = self._scan_rng.normal(0.0, SCAN_NOISE, beams)
-        ranges = np.minimum(reach, inner + fraction * (reach - inner) + noise).round(4)
-        return [float(r) for r in np.where(body < 0, reach, ranges)]
 
     # Teams of tens: the leash is kept once per control tick, not every physics step (one pybullet
     # call a step instead of two), so a blocked light robot may lead its body by a tick's travel.

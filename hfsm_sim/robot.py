@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 import pybullet as p
 
-from hfsm_sim.base import Base, Chassis, clamp
+from hfsm_sim.base import Base, Chassis, Scanner, clamp
 from hfsm_sim.battery import Battery
 from hfsm_sim.body import ARMS, HEAD, NECK, RobotBody, drive_joint
 from hfsm_sim.camera import CameraModel, camera_model, camera_spec, world_camera
@@ -17,6 +17,9 @@ from hfsm_sim.profile import MotionProfile
 from hfsm_sim.raster import Rasteriser, Renderer
 
 SETTLED_ANGLE, SETTLED_HEIGHT = 0.01, 0.002
+# The humanoid's range finder sweeps at chest height, as a NAO's sonars sit: over a table standing
+# on the floor (top 0.33 m), so it sees robots, walls and the legs of a lifted table.
+SCAN_HEIGHT, SCAN_INNER = 0.40, 0.16
 
 Vector = tuple[float, float, float]
 
@@ -74,7 +77,8 @@ class Robot(Base):
                  rng: np.random.Generator, image_size: tuple[int, int],
                  holding: Callable[[], bool],
                  load: Callable[[], tuple[np.ndarray, np.ndarray]],
-                 battery: Battery | None = None, *, cameras: Renderer | None = None) -> None:
+                 battery: Battery | None = None, *, cameras: Renderer | None = None,
+                 scan_rng: np.random.Generator | None = None) -> None:
         g = body.geometry
         super().__init__(cid, name, Chassis(body.body, body.mocap, g.hover, g.base_max_force), motion,
                          rng, battery)
@@ -85,6 +89,7 @@ class Robot(Base):
         self._load = load
         self._head_target = (0.0, 0.0)
         self._arm_target = motion.arm_low
+        self._scanner = Scanner(SCAN_HEIGHT, SCAN_INNER, scan_rng or np.random.default_rng(0))
 
     # head
     def set_head(self, yaw: float, pitch: float) -> None:

@@ -27,6 +27,7 @@ from hfsm_sim.specs import (
     FailureSpec,
     Jitter,
     LinearBattery,
+    RadioSpec,
     Refusal,
     RobotName,
     RobotStart,
@@ -46,6 +47,7 @@ __all__ = [
     "FailureSpec",
     "Jitter",
     "LinearBattery",
+    "RadioSpec",
     "RobotStart",
     "Room",
     "Scenario",
@@ -74,6 +76,7 @@ class Scenario(Strict):
     jitter: Jitter = Jitter()
     battery: BatterySpec = LinearBattery()
     failures: list[FailureSpec] = Field(default_factory=list)
+    radio: RadioSpec = Field(default_factory=RadioSpec, description="the room's radio loss")
 
     @field_validator("robots")
     @classmethod

@@ -135,6 +135,12 @@ class RobotStart(Strict):
     battery: BatterySpec | None = Field(None, description="this robot's battery (default: the scenario's)")
 
 
+class RadioSpec(Strict):
+    """The room's radio, when the scenario sets it (a run's own `radio_loss` wins when given)."""
+
+    loss: float = Field(0.0, ge=0.0, le=0.9, description="chance that a message is lost, 0 to 0.9")
+
+
 class Jitter(Strict):
     position: float = Field(0.0, ge=0.0, le=1.0, description="max offset per axis, metres")
     yaw: float = Field(0.0, ge=0.0, le=180.0, description="max offset, degrees")

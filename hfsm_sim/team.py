@@ -70,7 +70,7 @@ def make_robots(cid: int, scenario: Scenario, seed: int, bodies: Bodies, lifting
             else:
                 holding, load = partial(hands.holding, name), partial(hands.load, name)
             robots[name] = Robot(cid, name, bodies.full[name], own, rng, image_size, holding, load, battery,
-                                 cameras=cameras)
+                                 cameras=cameras, scan_rng=np.random.default_rng([seed, i, 0x5CA]))
         else:
             robots[name] = LightRobot(cid, name, bodies.light[name], light_motion(start.speed), rng,
                                       told_pose(start.x, start.y, start.yaw), battery)

@@ -55,7 +55,8 @@ class World:
             arms = {name: r for name, r in self.robots.items() if isinstance(r, Robot)}
             for lifting in self._liftings:
                 lifting.bind(arms)
-            self.radio = Radio(radio_latency, radio_loss, seed)
+            # a run's own loss wins; without one (0), the scenario's `radio: {loss: ...}`
+            self.radio = Radio(radio_latency, radio_loss or scenario.radio.loss, seed)
             self.truth = Truth(cid, scenario.room, room, tables, bodies.full, bodies.ids)
             self._scorer = Scorer(cid, self.truth, success_distance)
             self._steps = 0

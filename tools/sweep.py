@@ -132,8 +132,9 @@ def write_shard(path: Path, results: list[Result], total: int) -> None:
     path.write_text("\n".join(lines) + "\n")
 
 
-def merge_shards(paths: Sequence[Path]) -> list[Result]:
-    """The results of several shards as one sweep, sorted by trial; every trial exactly once."""
+def merge_shards(paths: Sequence[Path], complete: bool = True) -> list[Result]:
+    """The results of several shards as one sweep, sorted by trial; every trial exactly once (with
+    `complete` false, the trials of the shards there are: a campaign cut short)."""
     totals: set[int] = set()
     results: dict[int, Result] = {}
     for path in paths:
@@ -147,7 +148,7 @@ def merge_shards(paths: Sequence[Path]) -> list[Result]:
     if len(totals) != 1:
         raise SweepError(f"the shards come from sweeps of different sizes: {sorted(totals)}")
     missing = sorted(set(range(totals.pop())) - set(results))
-    if missing:
+    if missing and complete:
         more = " ..." if len(missing) > 10 else ""
         raise SweepError(f"trials missing from the shards: {missing[:10]}{more}")
     return [results[i] for i in sorted(results)]

@@ -4,14 +4,17 @@ towards one, and, when that leaves it wedged, a detour across the way it wants t
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
+
+from hfsm_behaviours.drive.things import BEAMS, things
 
 Point = tuple[float, float]
 Near = list[tuple[float, float, float]]
 JAMMED_S, DETOUR_S = 1.0, 2.0
 STALLED_S, PROGRESS = 10.0, 0.3  # no PROGRESS metres nearer the goal in STALLED_S seconds: stalled
 CLOSING = 4.0  # m/s of approach allowed per metre a thing sensed is beyond the clearance
+SCAN_EVERY = 0.25  # seconds between a range finder's scans (a NAO's sonars read at ~10 Hz)
 
 
 @dataclass
@@ -133,12 +136,39 @@ def _away_from(near: Near, vx: float, vy: float) -> Point:
 
 
 def sensed(robot: Any, look: float, yaw: float) -> list[Point]:
-    """What the proximity sensor senses within `look` metres, turned into the room frame by
-    odometry's yaw."""
+    """What the robot senses within `look` metres, turned into the room frame by odometry's yaw: the
+    proximity sensor's nearest points (light bodies), else the things its range finder sees
+    (`things`: robots and a lifted table's legs, not walls; humanoids)."""
     if look <= 0.0:
         return []
     nearby = getattr(robot, "nearby", None)
-    if nearby is None:
-        raise ValueError("go_to: `look` needs a body with a proximity sensor (body: light)")
+    if nearby is not None:
+        near = nearby(look)
+    elif hasattr(robot, "scan"):
+        near = things(robot.scan(BEAMS, look + 0.1), look)
+    else:
+        raise ValueError("`look` needs a body with a proximity sensor or a range finder")
     c, s = math.cos(yaw), math.sin(yaw)
-    return [(c * f - s * left, s * f + c * left) for f, left in nearby(look)]
+    return [(c * f - s * left, s * f + c * left) for f, left in near]
+
+
+@dataclass
+class Sensing:
+    """What a robot senses within `look` metres as it moves (`seen`, room frame, relative to it): a
+    proximity sensor read every tick; a range finder's scan (ray casts, the dearer) every SCAN_EVERY
+    seconds, the things it saw kept where they were in the odometry frame between scans."""
+
+    robot: Any
+    look: float
+    _at: float = -math.inf
+    _kept: list[Point] = field(default_factory=list)
+
+    def seen(self, now: float, here: tuple[float, float, float]) -> list[Point]:
+        if self.look <= 0.0:
+            return []
+        if getattr(self.robot, "nearby", None) is not None:
+            return sensed(self.robot, self.look, here[2])
+        if now - self._at >= SCAN_EVERY - 1e-9:
+            self._at = now
+            self._kept = [(here[0] + x, here[1] + y) for x, y in sensed(self.robot, self.look, here[2])]
+        return [(x - here[0], y - here[1]) for x, y in self._kept]

@@ -12,7 +12,7 @@ from typing import Any
 
 from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.approach.frames import odom_to_body, wrap
-from hfsm_behaviours.drive.avoid import Detour, dodge, sensed
+from hfsm_behaviours.drive.avoid import Detour, Sensing, dodge
 
 Point = tuple[float, float]
 BRAKE, CREEP = 2.0, 0.05
@@ -83,6 +83,7 @@ def go_to(ctx: Context, *, x: float, y: float, offset: list[float] | None = None
     others = _points(avoid or [])
     deadline = ctx.time + timeout
     way_out = Detour()
+    sensing = Sensing(robot, look)
     try:
         while True:
             here = robot.odometry()
@@ -91,7 +92,7 @@ def go_to(ctx: Context, *, x: float, y: float, offset: list[float] | None = None
             if ctx.time >= deadline:
                 return Outcome("timeout", x=round(here[0], 6), y=round(here[1], 6))
             velocity = heading(here, goal, pace, others, clearance)
-            seen = sensed(robot, look, here[2])
+            seen = sensing.seen(ctx.time, here)
             if seen:
                 left = math.hypot(goal[0] - here[0], goal[1] - here[1])
                 velocity = way_out.steer(ctx.time, velocity, seen, clearance, pace, left)
@@ -111,12 +112,13 @@ def hold(ctx: Context, *, x: float, y: float, tolerance: float = 0.1, look: floa
     robot = ctx.robot
     pace = robot.profile.forward_max
     deadline = ctx.time + timeout
+    sensing = Sensing(robot, look)
     try:
         while ctx.time < deadline:
             here = robot.odometry()
             far = math.hypot(x - here[0], y - here[1]) > tolerance
             velocity = heading(here, (x, y), pace, [], clearance) if far else (0.0, 0.0)
-            seen = [p for p in sensed(robot, look, here[2]) if math.hypot(*p) < clearance]
+            seen = [p for p in sensing.seen(ctx.time, here) if math.hypot(*p) < clearance]
             if seen:
                 velocity = dodge(velocity, seen, clearance, pace)
             if far or seen:

@@ -116,3 +116,29 @@ def claim_walls(tables: Sequence[Mapping[str, Any]], width: float, depth: float,
     best = min(itertools.product(*options),
                key=lambda ws: (crossings(ws, ordered, reach), round(sum(w.travel for w in ws), 6)))
     return {w.table: w for w in best}
+
+
+def turns(ways: Mapping[str, Way], tables: Sequence[Mapping[str, Any]], reach: float = 0.5,
+          places: float = 0.5) -> dict[str, list[str]]:
+    """The tables each table's pair waits for, so that pairs whose ways meet take turns: two tables
+    whose corridors overlap, one whose corridor runs over the other where it stands, or whose standing
+    places overlap (tops closer than 2 x `places` m, where the robots stand). The first to go is the
+    one standing in the more corridors of the others (it clears their way), then the one with the
+    shorter travel, then by id: one order for the whole room, so no two pairs ever wait for each
+    other, and every robot computes the same turns from the same claims."""
+    by_id = {str(t["id"]): t for t in tables}
+    tops = {tid: footprint(t, 0.0) for tid, t in by_id.items()}
+    stands = {tid: footprint(t, places) for tid, t in by_id.items()}
+
+    def blocks(a: str) -> int:
+        return sum(overlap(tops[a], ways[b].corridor) for b in ways if b != a)
+
+    order = sorted(ways, key=lambda tid: (-blocks(tid), ways[tid].travel, tid))
+    out: dict[str, list[str]] = {tid: [] for tid in order}
+    for i, first in enumerate(order):
+        for later in order[i + 1:]:
+            a, b = ways[first], ways[later]
+            if (overlap(a.corridor, b.corridor) or overlap(a.corridor, tops[later])
+                    or overlap(b.corridor, tops[first]) or overlap(stands[first], stands[later])):
+                out[later].append(first)
+    return out

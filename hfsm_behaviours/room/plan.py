@@ -8,9 +8,9 @@ the team learns over the radio, each a set that only grows: the robots lost, the
 sliding its table to the wall alone, its partner failed). Robots that heard the same, in any order,
 agree.
 
-    job = {"role": "leader" | "assistant" | "spare" | "idle", "table": "table1" | "",
+    job = {"role": "leader" | "assistant" | "spare" | "idle" | "stuck", "table": "table1" | "",
            "partner": "r2" | "", "channel": "table1_r1_r2_" | "", "at": [x, y], "toward": [x, y],
-           "group": 0, "others": [...], "key": "k0"}
+           "group": 0, "others": [...], "key": "k0"}  (+ "stuck": TABLE, "why": TEXT when stuck)
 
 `at` (where the table is believed to be) and `toward` are in the room's frame. A robot whose carry
 ended without its table at a wall says the pairing is spent (news too); once both robots of a pair
@@ -29,7 +29,7 @@ import math
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from hfsm_behaviours.room.claims import claim_walls
+from hfsm_behaviours.room.claims import Rect, claim_walls, turns
 from hfsm_behaviours.room.frames import difficulty_of
 from hfsm_behaviours.room.stations import room_ties
 from hfsm_behaviours.tararc.formulas import PAPER, Coefficients
@@ -55,16 +55,38 @@ def tables_of(tasks: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
 def make_room_plan(states: Mapping[str, Mapping[str, Any]], tasks: Sequence[Mapping[str, Any]],
                    room: Mapping[str, Any], coeff: Coefficients = PAPER, reach: float = 0.5) -> Plan:
     """TARARC's steps 2-5 with one group per table (relevance ties by the robots' stations,
-    `stations.room_ties`), every table's claimed wall, and every robot's colour as it said it (-1:
+    `stations.room_ties`), every table's claimed wall and the tables it waits for (`claims.turns`:
+    `after`), and every robot's colour as it said it (-1:
     not said), for a robot to look for its partner."""
     tables = tables_of(tasks)
     if len(states) < PAIR * len(tables):
         raise ValueError(f"{len(states)} robots cannot make {len(tables)} pairs")
     plan = make_plan(states, tables, coeff, room_ties(states, tables))
     ways = claim_walls(tables, float(room["width"]), float(room["depth"]), reach)
-    plan["tables"] = {t["id"]: {**t, "toward": list(ways[t["id"]].toward)} for t in tables}
+    after = turns(ways, tables, reach)
+    plan["tables"] = {t["id"]: {**t, "toward": list(ways[t["id"]].toward), "after": after[t["id"]],
+                                "corridor": _rect(ways[t["id"]].corridor)} for t in tables}
     plan["colours"] = {r: int(s.get("colour", -1)) for r, s in sorted(states.items())}
     return plan
+
+
+def _rect(r: Rect) -> list[float]:
+    """A corridor as [x, y, yaw (radians), length, width], rounded to the millimetre."""
+    return [round(r.cx, 3), round(r.cy, 3), round(math.atan2(r.uy, r.ux), 4), round(2 * r.half_length, 3),
+            round(2 * r.half_width, 3)]
+
+
+def drawn(plan: Plan, job: Mapping[str, Any], done: Sequence[str], where: Mapping[str, Sequence[float]]
+          ) -> dict[str, list[list[Any]]]:
+    """What the monitor's room view draws of one robot's belief (room frame): the claimed corridors
+    of the tables not done, where the robot believes its table stands, and where it believes each
+    teammate last stood."""
+    rects = [[*t["corridor"], f"{t['id']} corridor"] for t in plan["tables"].values()
+             if "corridor" in t and t["id"] not in set(done)]
+    points = [[round(float(p[0]), 3), round(float(p[1]), 3), str(r)] for r, p in sorted(where.items())]
+    if job.get("at"):
+        points.append([round(float(job["at"][0]), 3), round(float(job["at"][1]), 3), f"{job['table']}?"])
+    return {"rects": rects, "points": points}
 
 
 def _where(plan: Plan, robot: str) -> tuple[float, float]:
@@ -84,6 +106,9 @@ def groups_after(plan: Plan, lost: Sequence[str], done: Sequence[str]) -> list[d
             continue
         while len(needy["members"]) < PAIR:
             free = [(g, m) for g in groups if g["task"]["id"] in finished for m in g["members"]]
+            if not free and len(needy["members"]) == PAIR - 1:  # two lone robots of short tables pair up
+                free = [(g, m) for g in groups if g is not needy and g["task"]["id"] not in finished
+                        and len(g["members"]) < PAIR for m in g["members"]]
             if not free:
                 break
             task = needy["task"]
@@ -141,6 +166,20 @@ def sliding_partners(lost: Sequence[str], done: Sequence[str], spent: Sequence[s
     return kept
 
 
+def stranded(plan: Plan, groups: Sequence[Mapping[str, Any]], done: Sequence[str], sliding: bool
+             ) -> dict[str, str]:
+    """When no pair is left for any table not yet done (fewer than two robots alive, no slide going
+    on): the first such table and why, which ends the room honestly; else {}."""
+    finished = set(done)
+    left = [g for g in groups if g["task"]["id"] not in finished]
+    if not left or sliding or any(len(g["members"]) >= PAIR for g in left):
+        return {}
+    alive = sorted({m for g in groups for m in g["members"]}, key=lambda r: (len(r), r))
+    table = str(left[0]["task"]["id"])
+    who = f"{len(alive)} robot{'' if len(alive) == 1 else 's'} left alive ({', '.join(alive) or 'none'})"
+    return {"stuck": table, "why": f"{table} needs two robots to lift it and {who}"}
+
+
 def job_of(plan: Plan, me: str, lost: Sequence[str], done: Sequence[str],
            seen: Mapping[str, Sequence[float]], spent: Sequence[str] = (),
            sliding: Sequence[str] = ()) -> dict[str, Any] | None:
@@ -150,8 +189,17 @@ def job_of(plan: Plan, me: str, lost: Sequence[str], done: Sequence[str],
     alive = sorted(r for r in plan["robots"] if r not in set(lost))
     job: dict[str, Any] = {"role": "idle", "table": "", "partner": "", "channel": "", "at": [], "toward": [],
                            "group": -1, "others": [r for r in alive if r != me], "key": key_of(lost, done)}
-    grouped = sorted(set(lost) - sliding_partners(lost, done, spent, sliding))
-    for index, g in enumerate(groups_after(plan, grouped, done)):
+    slid = sliding_partners(lost, done, spent, sliding)
+    grouped = sorted(set(lost) - slid)
+    groups = groups_after(plan, grouped, done)
+    left = stranded(plan, groups, done, bool(slid))
+    mine = _job_in(plan, me, groups, done, seen, spent, job)
+    return {**mine, "role": "stuck", **left} if left else mine
+
+
+def _job_in(plan: Plan, me: str, groups: list[dict[str, Any]], done: Sequence[str],
+            seen: Mapping[str, Sequence[float]], spent: Sequence[str], job: dict[str, Any]) -> dict[str, Any]:
+    for index, g in enumerate(groups):
         if me not in g["members"]:
             continue
         table = plan["tables"][g["task"]["id"]]

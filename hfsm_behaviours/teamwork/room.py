@@ -12,7 +12,7 @@ from typing import Any
 from hfsm.primitive import Context, Outcome, primitive
 from hfsm.runtime.program import span_ticks
 from hfsm_behaviours.room.frames import ahead, at_wall, relocalise, to_local, to_room
-from hfsm_behaviours.room.plan import job_of, make_room_plan
+from hfsm_behaviours.room.plan import drawn, job_of, make_room_plan
 from hfsm_behaviours.teamwork.plans import coefficients_from
 
 
@@ -26,22 +26,28 @@ def room_allocate(ctx: Context, *, mine: dict[str, Any], heard: dict[str, Any], 
     return Outcome("allocated", plan=plan)
 
 
-@primitive(outcomes=["assigned", "excluded"], outputs=["job"])
+@primitive(outcomes=["assigned", "excluded"], outputs=["job", "drawn"])
 def room_assign(ctx: Context, *, plan: dict[str, Any], lost: list[Any], done: list[Any], seen: dict[str, Any],
                 start: dict[str, Any], spent: list[Any] | None = None,
-                sliding: list[Any] | None = None) -> Outcome:
+                sliding: list[Any] | None = None, where: dict[str, Any] | None = None) -> Outcome:
     """This robot's job after the robots `lost` and the tables `done`, a dropped table where a
     survivor `seen` it, on a channel no `spent` pairing used, no helper lent to a table a survivor
     is `sliding` alone; `table` and `toward` in its own start frame (from `start`, where it was told
-    it was placed). `excluded` when a teammate took this robot for lost."""
+    it was placed); `turn`: the tables not yet done that its table waits for (their ways meet,
+    `claims.turns`). `excluded` when a teammate took this robot for lost. `drawn`: what the monitor
+    draws of this robot's belief (`plan.drawn`: claimed corridors, its table, teammates `where` they
+    last said they stood)."""
     where = {str(t): [float(v["x"]), float(v["y"])] for t, v in seen.items()}
     job = job_of(plan, ctx.agent, [str(r) for r in lost], [str(t) for t in done], where,
                  [str(c) for c in spent or []], [str(e) for e in sliding or []])
     if job is None:
-        return Outcome("excluded", job={})
+        return Outcome("excluded", job={}, drawn={})
+    after = plan["tables"][job["table"]].get("after", []) if job["table"] else []
     local = {"table_local": to_local(start, job["at"]) if job["at"] else [],
-             "toward_local": to_local(start, job["toward"]) if job["toward"] else []}
-    return Outcome("assigned", job={**job, **local})
+             "toward_local": to_local(start, job["toward"]) if job["toward"] else [],
+             "turn": [t for t in after if t not in {str(d) for d in done}]}
+    shown = drawn(plan, job, [str(t) for t in done], where or {})
+    return Outcome("assigned", job={**job, **local}, drawn=shown)
 
 
 @primitive(outcomes=["located"], outputs=["seen"])

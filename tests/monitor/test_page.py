@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import subprocess
 import sys
 from collections.abc import Iterator
@@ -130,5 +131,52 @@ def test_a_barrier_shows_while_waiting_and_who_it_heard_once_passed(page: Any, t
         assert "waiting at a barrier" in page.inner_text('.agent[data-agent="a"] details[data-key="meet/meet"]')
         page.evaluate("window.hfsm.seek(2)")
         assert "last barrier passed at 1.05 s (meet), with b" in page.inner_text('.agent[data-agent="a"] .mailbox')
+    finally:
+        server.stop()
+
+
+def _room_trace(path: Path) -> None:
+    """A room run's records as the simulator and clear_room write them: r1's belief (`drawn`: a
+    claimed corridor, where it believes r2 stands) and what it sensed (a table, in its start frame)."""
+    drawn = {"rects": [[1.0, 0.0, 0.0, 2.0, 1.0, "table1 corridor"]], "points": [[-1.0, 1.0, "r2"]]}
+    sensed = {"start": [0.0, -1.0, 90.0], "tables_in_view": {
+        "t": 0.5, "value": [{"x": 1.0, "y": 1.0, "heading": 0.0, "length": 0.8, "width": 0.5, "clipped": False}]}}
+    records = [
+        {"t": 0.0, "agent": "r1", "path": ["clear_room"], "kind": "enter"},
+        {"t": 0.0, "agent": "r1", "path": ["clear_room", "assign"], "kind": "enter", "do": "room_assign"},
+        {"t": 0.5, "agent": "r1", "path": ["clear_room", "assign"], "kind": "event", "event": "assigned",
+         "vars": {"drawn": drawn}},
+        {"t": 0.5, "agent": "world", "path": [], "kind": "pose", "room": [6.0, 4.0],
+         "tables": [[-1.0, 0.0, 0.0, 0.8, 0.5, 0.0]], "robots": {"r1": [0.0, -1.0, 1.5708]}, "targets": [],
+         "sensed": {"r1": sensed}},
+    ]
+    path.write_text("".join(json.dumps(r) + "\n" for r in records), encoding="utf-8")
+
+
+def _pixel(page: Any, x: int, y: int) -> list[int]:
+    return page.evaluate(f"Array.from(document.getElementById('room').getContext('2d').getImageData({x}, {y}, 1, 1).data)")
+
+
+def test_the_room_view_draws_claimed_corridors_beliefs_and_what_each_robot_sensed(page: Any, tmp_path: Path) -> None:
+    trace = tmp_path / "room.jsonl"
+    _room_trace(trace)
+    server = Server(Hub(read_trace(trace)), drawings(PING_PONG, []), trace.name)
+    server.start()
+    try:
+        _open(page, server.url)
+        page.evaluate("window.hfsm.seek(1)")
+        # 6 x 4 m on 320 px: 50 px a metre, the room's centre at (160, 160)
+        floor, corridor = _pixel(page, 260, 60), _pixel(page, 210, 175)  # a corner; inside the corridor
+        assert corridor[0] > floor[0] + 15 and corridor[1] > floor[1] + 15  # tinted yellow
+        # r1 was told it started at (0, -1) facing +y: its table 1 m ahead and 1 m left is at (-1, 0),
+        # turned 90 degrees: its outline's near edge runs along y = 0.4 m (pixel row 140), magenta
+        edge = [_pixel(page, x, y) for x in (105, 110, 115) for y in (139, 140, 141)]
+        assert any(p[0] > 180 and p[2] > 180 and p[1] < 160 for p in edge), edge
+        assert page.eval_on_selector_all("#belief option", "os => os.map(o => o.value)") == ["", "r1"]
+        believed = _pixel(page, 115, 110)  # where r1 believes r2 stands, (-1, 1): drawn for r1 alone
+        page.select_option("#belief", "r1")
+        circle = [_pixel(page, x, y) for x in range(113, 118) for y in (109, 110, 111)]
+        assert any(p[2] > 150 and p[1] > 130 for p in circle), circle
+        assert not (believed[2] > 150 and believed[1] > 130)
     finally:
         server.stop()

@@ -13,6 +13,7 @@ from hypothesis import strategies as st
 from hfsm_behaviours.room.claims import Rect, claim_walls, overlap
 from hfsm_behaviours.room.frames import at_wall, difficulty_of, relocalise, to_local, to_room
 from hfsm_behaviours.room.plan import (
+    drawn,
     groups_after,
     job_of,
     make_room_plan,
@@ -196,3 +197,46 @@ def test_a_table_seen_where_it_is_known_to_stand_corrects_the_start(
 def test_a_table_at_its_wall_stands_on_its_way_a_little_off_the_wall() -> None:
     table = {"x": -1.6, "y": 0.3, "length": 0.8, "toward": [-3.5, 0.3]}
     assert at_wall(table) == pytest.approx([-3.05, 0.3])
+
+
+def test_two_tables_left_short_make_one_pair_of_their_survivors() -> None:
+    # r2 (table1) and r4 (table2) fail before either table is done: r1 and r3 pair up for table1
+    plan = make_room_plan(FOUR, TASKS, ROOM)
+    groups = groups_after(plan, ["r2", "r4"], [])
+    assert [g["members"] for g in groups] == [["r1", "r3"], []]
+    jobs = {r: job_of(plan, r, ["r2", "r4"], [], {}) for r in ("r1", "r3")}
+    assert [(j["role"], j["table"], j["partner"]) for j in jobs.values() if j] == [
+        ("leader", "table1", "r3"), ("assistant", "table1", "r1")]
+    after = {r: job_of(plan, r, ["r2", "r4"], ["table1"], {}) for r in ("r1", "r3")}
+    assert {(j["role"], j["table"]) for j in after.values() if j} == {("leader", "table2"), ("assistant", "table2")}
+
+
+def test_with_no_pair_left_every_robot_alive_is_stuck_and_says_which_table() -> None:
+    plan = make_room_plan(FOUR, TASKS, ROOM)
+    job = job_of(plan, "r1", ["r2", "r3", "r4"], [], {})
+    assert job is not None and job["role"] == "stuck" and job["stuck"] == "table1"
+    assert job["why"] == "table1 needs two robots to lift it and 1 robot left alive (r1)"
+    done_first = job_of(plan, "r1", ["r2", "r3", "r4"], ["table1"], {})
+    assert done_first is not None and (done_first["role"], done_first["stuck"]) == ("stuck", "table2")
+    assert job_of(plan, "r1", ["r2", "r3", "r4"], ["table1", "table2"], {})["role"] == "idle"  # all done
+
+
+def test_a_survivor_sliding_its_table_alone_is_not_stuck() -> None:
+    plan = make_room_plan(FOUR, TASKS, ROOM)
+    channel = job_of(plan, "r1", [], [], {})["channel"]
+    slide = slide_of("table1", channel, "r1", "r2")
+    job = job_of(plan, "r1", ["r2", "r3", "r4"], [], {}, [], [slide])
+    assert job is not None and job["role"] == "leader"
+    ended = job_of(plan, "r1", ["r2", "r3", "r4"], [], {}, [f"{channel}/r1"], [slide])
+    assert ended is not None and ended["role"] == "stuck"  # the slide failed: nobody is left to help
+
+
+def test_what_the_monitor_draws_of_a_belief() -> None:
+    plan = make_room_plan(FOUR, TASKS, ROOM)
+    job = job_of(plan, "r1", [], [], {})
+    shown = drawn(plan, job, ["table2"], {"r3": [1.0, 2.0]})
+    assert [r[-1] for r in shown["rects"]] == ["table1 corridor"]  # table2 is done
+    x, y, yaw, length, width = shown["rects"][0][:5]
+    # from table1's east end (-1.2) to the west wall (-3.5), the table's width and a robot each side
+    assert (x, y, abs(yaw), length, width) == (-2.35, 0.0, pytest.approx(math.pi, abs=1e-4), 2.3, 1.5)
+    assert shown["points"] == [[1.0, 2.0, "r3"], [-1.6, 0.0, "table1?"]]

@@ -141,3 +141,19 @@ def test_the_range_finder_sees_the_walls_and_other_robots(worlds: list[World]) -
     assert ranges[2] == pytest.approx(5.0, abs=0.05)
     assert ranges[3] == pytest.approx(3.0, abs=0.05)
     assert robot.scan(4, 2.5) == [2.5, pytest.approx(1.85, abs=0.05), 2.5, 2.5]  # nothing within reach
+
+
+def test_the_humanoid_range_finder_sees_robots_and_walls_over_a_standing_table(worlds: list[World]) -> None:
+    world = make(worlds, {"r1": {"x": 1.0, "y": -1.0, "yaw": 0},
+                          "r2": {"x": 1.0, "y": 1.0, "yaw": 0}},
+                 tables=[{"id": "t", "x": 2.5, "y": -1.0, "yaw": 90}], jitter={"position": 0.0, "yaw": 0.0})
+    world.advance(0.05)
+    robot = world.robots["r1"]
+    assert isinstance(robot, Robot)
+    ranges = robot.scan(4, 20.0)  # ahead (over the table, to the wall), left, behind, right
+    assert ranges[0] == pytest.approx(3.0, abs=0.05)
+    assert ranges[1] == pytest.approx(2.0 - 0.14, abs=0.05)  # r2's side (0.28 m wide), 2 m to its left
+    assert ranges[2] == pytest.approx(5.0, abs=0.05)
+    assert ranges[3] == pytest.approx(3.0, abs=0.05)
+    robot._fail()
+    assert robot.scan(4, 20.0) == []

@@ -1,6 +1,5 @@
 from __future__ import annotations
 
-import math
 import sys
 from dataclasses import replace
 from pathlib import Path
@@ -11,61 +10,22 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from hfsm_behaviours.room.claims import claim_walls, crossings  # noqa: E402
-from hfsm_sim.scenario import scenario_from_dict  # noqa: E402
-from tools.room.experiments import QUICK, Config, trials  # noqa: E402
-from tools.room.report import wilson, write  # noqa: E402
-from tools.room.scenes import PAIR_GAP, REACH, room  # noqa: E402
+from hfsm_sim.roomgen import STRATA, draw  # noqa: E402
+from tools.room.experiments import DEVELOP, HELD, QUICK, Config, trials  # noqa: E402
+from tools.room.report import cause, verdict, wilson, write  # noqa: E402
 from tools.room.trials import RoomLine, cleared_at, measure, phase, run_room_trial  # noqa: E402
 from tools.sweep import run_sweep  # noqa: E402
 
 
-@pytest.mark.parametrize("k", [2, 3, 4, 5])
-def test_generated_rooms_are_valid_and_solvable(k: int) -> None:
-    for n in range(2 * k, 2 * k + 4):
-        for seed in (1, 2):
-            data = room(seed, k, n, failure=True)
-            scenario_from_dict(data)
-            assert len(data["tables"]) == k and len(data["robots"]) == n
-            size = data["room"]["width"], data["room"]["depth"]
-            ways = claim_walls(data["tables"], *size, REACH)
-            assert crossings(list(ways.values()), data["tables"], REACH) == 0
-            robots = list(data["robots"].values())
-            for i, t in enumerate(data["tables"]):  # robots 2i+1 and 2i+2 stand either side of table i
-                for r in robots[2 * i: 2 * i + 2]:
-                    assert math.hypot(r["x"] - t["x"], r["y"] - t["y"]) == pytest.approx(PAIR_GAP, abs=0.25)
-            for a in range(n):
-                for b in range(a + 1, n):
-                    assert math.hypot(robots[a]["x"] - robots[b]["x"], robots[a]["y"] - robots[b]["y"]) > 0.8
-
-
-def test_a_seed_always_draws_the_same_room_and_failure() -> None:
-    assert room(7, 3, 8, failure=True) == room(7, 3, 8, failure=True)
-    assert room(7, 3, 8) != room(8, 3, 8)
-    failure = room(7, 3, 8, failure=True, fail_window=(10.0, 20.0))["failures"][0]
-    assert failure["robot"] in room(7, 3, 8)["robots"] and 10.0 <= failure["at"] <= 20.0
-
-
-def test_the_campaign_covers_the_issue() -> None:
-    """At least 40 target rooms; K = 2..5 with N = 2K..2K+3, rooms with and without a failure;
-    the `rate:` form; radio loss 0.1 and 0.3 on rooms that also run lossless."""
+def test_the_campaign_draws_every_stratum_from_the_generator_on_held_seeds() -> None:
     every = trials(Config())
-    target = [t for t in every if t.experiment == "target"]
-    assert len(target) >= 40
-    assert {len(t.scenario["tables"]) for t in target} == {3}
-    assert {len(t.scenario["robots"]) for t in target} == {6, 7, 8}
-    assert all(len(t.scenario["failures"]) == 1 for t in target)
-    grid = [t for t in every if t.experiment == "kn"]
-    kn = {(len(t.scenario["tables"]), len(t.scenario["robots"])) for t in grid}
-    assert kn == {(k, n) for k in range(2, 6) for n in range(2 * k, 2 * k + 4)}
-    for k, n in kn:
-        rooms = [t for t in grid if (len(t.scenario["tables"]), len(t.scenario["robots"])) == (k, n)]
-        assert sorted(len(t.scenario["failures"]) for t in rooms) == [0, 1]
-    rated = [t for t in every if t.experiment == "rate"]
-    assert rated and all("rate" in t.scenario["failures"][0] for t in rated)
-    lossy = [t for t in every if t.experiment == "loss"]
-    assert {t.radio_loss for t in lossy} == {0.1, 0.3}
-    assert all(any(t.scenario == u.scenario and u.radio_loss == 0 for u in target) for t in lossy)
+    assert len(every) >= 200
+    for stratum in STRATA:
+        rooms = [t for t in every if t.experiment == stratum]
+        assert [t.seed for t in rooms] == list(range(HELD, HELD + 25))
+        assert all(t.scenario == draw(t.seed, stratum) and t.max_time == 2100.0 for t in rooms)
+    assert max(DEVELOP) < HELD  # the measure never sees a seed used while developing
+    assert [t.experiment for t in trials(Config(rooms=2, strata=("loss", "walls")))] == ["loss"] * 2 + ["walls"] * 2
 
 
 def test_wilson_interval() -> None:
@@ -104,37 +64,56 @@ def test_the_trace_gives_the_clearing_time_and_the_failure_phase() -> None:
         "mid-carry", "spare", "before lift", "after its table"]
 
 
-def test_the_report_goes_between_its_markers(tmp_path: Path) -> None:
-    def result(trial: int, experiment: str, k: int, n: int, cleared: bool, **more: Any) -> dict[str, Any]:
-        return {"trial": trial, "experiment": experiment, "x": n, "seed": trial, "k": k, "n": n, "loss": 0.0,
-                "room": [8.0, 6.0], "cleared": cleared, "clear_time": 120.0 + trial if cleared else None,
-                "time": 130.0 if cleared else 2100.0, "error": None if cleared else "stopped at --max-time",
-                "distances": [0.01] * k if cleared else [0.01, 0.9, 0.02], "dropped": False, "collisions": 0,
-                "carries": [], "wall": 40.0, "failures": [], **more}
+SCORE = {"table_wall_distances": [0.01, 0.9], "table_wall_distance": 0.9, "robot_collisions": 0, "dropped": False}
+TABLES = {"tables": [{"id": "table1"}, {"id": "table2"}], "failures": []}
+WHY = "table2 needs two robots to lift it and 1 robot left alive (r1)"
 
-    fail = {"robot": "r2", "at": 50.0, "phase": "mid-carry", "recovered": False}
-    spare = {**fail, "phase": "spare", "recovered": True}
-    results = [result(0, "target", 3, 6, True, failures=[spare]),
-               result(1, "target", 3, 7, False, failures=[fail]), result(2, "kn", 2, 4, True),
-               result(3, "kn", 3, 6, True), result(4, "kn", 3, 7, True),
-               result(5, "rate", 3, 7, True, x=0.05, failures=[{**spare, "robot": "r4"}, spare]),
-               result(6, "loss", 3, 6, True, seed=0, loss=0.3, failures=[spare])]
+
+def test_a_team_that_ends_stuck_before_the_limit_ended_honestly() -> None:
+    line = RoomLine()
+    line.write(_event(300.0, "r1", "assign", job={"role": "stuck", "stuck": "table2", "why": WHY}))
+    honest = measure(line, SCORE, TABLES, {"r1": "stuck", "r2": None}, 310.0, None)
+    assert honest["honest"] and not honest["cleared"] and honest["stuck"] == [WHY]
+    assert verdict(honest) == "honest"
+    timed_out = measure(line, SCORE, TABLES, {"r1": None, "r2": None}, 2100.0, "stopped at --max-time 2100")
+    assert not timed_out["honest"] and verdict(timed_out) == "failed"
+    touched = measure(line, {**SCORE, "robot_collisions": 2}, TABLES, {"r1": "stuck"}, 310.0, None)
+    assert not touched["honest"]
+    cleared = measure(RoomLine(), {**SCORE, "table_wall_distances": [0.01, 0.02], "robot_collisions": 1}, TABLES,
+                      {"r1": "cleared"}, 200.0, None)
+    assert cleared["cleared"] and not cleared["success"] and verdict(cleared) == "contacts"
+
+
+def _result(trial: int, stratum: str, success: bool, **more: Any) -> dict[str, Any]:
+    return {"trial": trial, "experiment": stratum, "x": stratum, "seed": 10000 + trial, "k": 2, "n": 5,
+            "loss": 0.0, "room": [8.0, 6.0], "cleared": success, "success": success, "honest": False,
+            "stuck": [], "clear_time": 120.0 if success else None, "time": 130.0 if success else 2100.0,
+            "error": None if success else "stopped at --max-time 2100", "distances": [0.01, 0.01 if success else 0.9],
+            "dropped": False, "collisions": 0, "carries": [], "wall": 40.0 + trial, "failures": [], **more}
+
+
+def test_the_report_gives_each_stratum_and_every_failing_room_with_its_cause(tmp_path: Path) -> None:
+    results = [_result(0, "open", True), _result(1, "open", True), _result(2, "walls", False),
+               _result(3, "walls", True, collisions=0),
+               _result(4, "failures", False, honest=True, stuck=[WHY], time=400.0, error=None,
+                       failures=[{"robot": "r2", "at": 50.0, "phase": "mid-carry"}]),
+               _result(5, "close", False, cleared=True, collisions=3, clear_time=200.0)]
     doc = tmp_path / "ROOM.md"
     doc.write_text("# Room\n\nbefore\n<!-- room_bench:start -->\nold\n<!-- room_bench:end -->\nafter\n")
-    write(results, doc, tmp_path / "fig", "tools/room_bench.py", 600.0, 2, "load average 1.00")
+    write(results, doc, tmp_path / "fig", "tools/room_bench.py --rooms 2", 600.0, 2, "load average 1.00")
     text = doc.read_text(encoding="utf-8")
     assert text.startswith("# Room\n\nbefore\n<!-- room_bench:start -->") and text.endswith("end -->\nafter\n")
     assert "old" not in text
-    assert "**Target rooms: 1 of 2 cleared (50 %; 95 % Wilson interval 9-91 %)** within 35 simulated minutes" in text
-    assert "mid-carry: 0/1; spare: 4/4" in text
-    assert "Failure rate 0.05 per robot per minute (3 tables, 7 robots): 1 of 1 cleared" in text
-    assert "2 robots failed in all" in text
-    assert "Radio loss, the same target rooms (seeds 0): 0 %: 1/1 cleared, median 120 s; 30 %: 1/1" in text
-    assert "| 2 | 122 (1/1) |  |" in text and "| 3 | 123 (1/1) | 124 (1/1) |" in text  # without a failure
-    assert "| 3 | 120 (1/1) | - (0/1) | 120 (1/2) |" in text  # with a failure: the target rooms
-    assert "| 2 |  |  |  |" not in text
-    assert "- trial 1 (target, seed 1): gaps 0.01, 0.90, 0.02 m" in text
-    assert sorted(p.name for p in (tmp_path / "fig").iterdir()) == ["time_vs_k.png", "time_vs_n.png"]
+    assert "**All rooms: 3 of 6 (50 %; 95 % Wilson 19-81 %) successes**; honest ends 1" in text
+    assert "| open | 2 | 2 (100 %) | 34-100 % | 0 |" in text
+    assert "| walls | 2 | 1 (50 %) | 9-91 % |" in text
+    assert "median wall s" in text and "Wall time of one room: median 42 s" in text
+    assert "- trial 2 (walls, seed 10002, failed): tables off their walls:" in text
+    assert f"- trial 4 (failures, seed 10004, honest): stuck: {WHY}" in text
+    assert "- trial 5 (close, seed 10005, contacts): 3 robot-robot contacts" in text
+    assert "mid-carry: 0/1" in text
+    assert sorted(p.name for p in (tmp_path / "fig").iterdir()) == ["wall_vs_n.png"]
+    assert "stopped at the limit, 2100 s" in cause(results[2])
 
 
 @pytest.mark.slow
@@ -145,7 +124,7 @@ def test_results_are_the_same_on_one_and_two_workers() -> None:
     assert [r["trial"] for r in one] == [0, 1]
     assert [{k: v for k, v in r.items() if k != "wall"} for r in one] == [
         {k: v for k, v in r.items() if k != "wall"} for r in two]
-    assert [(r["k"], r["n"]) for r in one] == [(3, 6), (2, 4)]
+    assert [r["experiment"] for r in one] == ["open", "failures"]
     assert all(r["collisions"] == 0 and not r["cleared"] for r in one)
 
 

@@ -1,4 +1,5 @@
-"""The bench's rooms, as data for hfsm_sim/scenario.py: K tables of different sizes, positions and
+"""Issue 10's rooms (the long run's, tools/longrun.py; the campaign now draws from hfsm_sim/roomgen.py),
+as data for hfsm_sim/scenario.py: K tables of different sizes, positions and
 headings, one pair of humanoids beside each table (on either long side, facing it, as the shipped
 `room_*` scenarios start them), the N - 2K others standing free, all drawn from the seed.
 

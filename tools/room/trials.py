@@ -23,7 +23,8 @@ ROUTINE = frozenset({"done", "sent", "join", "stopped", "passed", "heard", "rece
 
 @dataclass(frozen=True)
 class RoomTrial:
-    """`experiment` and `x` say where the result goes; the room is `scenario` (tools/room/scenes.py)."""
+    """`experiment` (the stratum) and `x` say where the result goes; the room is `scenario`
+    (hfsm_sim.roomgen); `radio_loss` 0 leaves the scenario's own."""
 
     experiment: str
     x: Any
@@ -44,6 +45,7 @@ class RoomLine:
     lifted: dict[str, float] = field(default_factory=dict)
     role: dict[str, str] = field(default_factory=dict)
     endings: dict[str, Counter[str]] = field(default_factory=dict)
+    stuck: dict[str, str] = field(default_factory=dict)  # robot -> why no pair is left (its job)
 
     def write(self, record: dict[str, Any]) -> None:
         kind, path, agent = record["kind"], record["path"], record["agent"]
@@ -57,7 +59,9 @@ class RoomLine:
         elif kind == "event" and len(path) == 2:
             values = record.get("vars", {})
             job = values.get("job")
-            if isinstance(job, dict) and job.get("role"):
+            if isinstance(job, dict) and job.get("role") == "stuck":
+                self.stuck[agent] = str(job.get("why", ""))
+            elif isinstance(job, dict) and job.get("role"):
                 self.role[agent] = str(job["role"])
             if path[1] in CARRY_ENDS and values.get("carries"):
                 self.carries.append({"t": record["t"], "agent": agent, **values["carries"][-1]})
@@ -103,6 +107,9 @@ def failures_of(line: RoomLine, scenario: dict[str, Any]) -> list[dict[str, Any]
 
 def measure(line: RoomLine, result_score: dict[str, Any], scenario: dict[str, Any],
             outcomes: dict[str, str | None], time: float, error: str | None) -> dict[str, Any]:
+    """What the bench keeps of a run. `success`: cleared with no robot-robot contact. `honest`: not
+    cleared, but every robot alive ended `stuck` before the time limit (no pair was left for a table;
+    `stuck` says which and why), with no contact: reported apart from the rooms that failed."""
     tables = [str(t["id"]) for t in scenario["tables"]]
     distances = result_score.get("table_wall_distances") or [result_score["table_wall_distance"]]
     at_walls = all(d is not None and d <= 0.15 for d in distances)
@@ -111,11 +118,17 @@ def measure(line: RoomLine, result_score: dict[str, Any], scenario: dict[str, An
     # failure's, not the team's; any other drop (a pair losing its table) still fails the room.
     dropped_by_failure = bool(result_score["dropped"]) and any(f["phase"] == "mid-carry" for f in failures)
     cleared = at_walls and (not result_score["dropped"] or dropped_by_failure)
+    stuck = sorted(set(line.stuck.values()))
+    timed_out = bool(error and "max-time" in error)
     out: dict[str, Any] = {
         "cleared": cleared, "clear_time": cleared_at(line.carries, tables) if cleared else None,
         "time": time, "error": error, "distances": distances, "dropped": result_score["dropped"],
         "dropped_by_failure": dropped_by_failure, "collisions": result_score["robot_collisions"],
         "outcomes": outcomes, "carries": [dict(c) for c in line.carries],
+        "success": cleared and result_score["robot_collisions"] == 0,
+        "honest": (not cleared and not timed_out and result_score["robot_collisions"] == 0 and bool(stuck)
+                   and all(o in ("stuck", None) for o in outcomes.values())),
+        "stuck": stuck,
         "failed": line.failed, "failures": [{**f, "recovered": cleared} for f in failures],
     }
     if failures:
@@ -136,8 +149,10 @@ def run_room_trial(trial: RoomTrial) -> dict[str, Any]:
         spec = TrialSpec(str(MACHINE), str(path), trial.seed, {}, trial.max_time, radio_loss=trial.radio_loss)
         result = run_trial(spec, line)
     sc = trial.scenario
+    loss = trial.radio_loss or float(sc.get("radio", {}).get("loss", 0.0))
     head = {"experiment": trial.experiment, "x": trial.x, "seed": trial.seed, "k": len(sc["tables"]),
-            "n": len(sc["robots"]), "loss": trial.radio_loss, "max_time": trial.max_time,
-            "room": [sc["room"]["width"], sc["room"]["depth"]]}
+            "n": len(sc["robots"]), "loss": loss, "max_time": trial.max_time,
+            "room": [sc["room"]["width"], sc["room"]["depth"]],
+            "tables": [str(t["id"]) for t in sc["tables"]]}
     return {**head, **measure(line, result.score, sc, result.outcomes, result.time, result.error),
             "wall": round(result.wall, 2)}

@@ -55,7 +55,7 @@ function render() {
   slider.max = replay.end; slider.value = page.time;
   $("time").textContent = `${fmt(page.time)} s`;
   drawAgents(replay, page.machines, $("agents"));
-  drawRoom(replay, $("room"), $("room-note"), page.live && !page.ended);
+  drawRoom(replay, $("room"), $("room-note"), beliefChoice(replay, $("belief")), page.live && !page.ended);
   drawSequence(replay, $("sequence"), page.ended);
   drawMarks(replay, $("marks"));
   refreshFigure();
@@ -78,6 +78,7 @@ function pause() { page.playing = false; $("play").innerHTML = "&#9654;"; }
 $("play").onclick = () => (page.playing ? pause() : (page.time >= replay.end && seek(0), play()));
 $("step").onclick = () => { pause(); seek(replay.nextTime(page.time)); };
 $("back").onclick = () => { pause(); seek(replay.previousTime(page.time)); };
+$("belief").onchange = () => render();
 $("slider").oninput = event => { pause(); $("follow").checked = false; seek(parseFloat(event.target.value)); };
 
 function search() {

@@ -197,7 +197,69 @@ function drawVars(table, vars) {
   }
 }
 
-function drawRoom(replay, canvas, note, live = false) {
+// The robots the room view draws the beliefs of: the one chosen, or every robot ("").
+function beliefChoice(replay, select) {
+  const names = replay.agentNames();
+  const have = [...select.options].map(o => o.value);
+  for (const name of names) if (!have.includes(name)) select.append(el("option", { value: name }, name));
+  return select.value ? [select.value] : names;
+}
+
+// What a machine asks the room view to draw of its agent's belief: its top machine's var `drawn`,
+// {rects: [[x, y, yaw, length, width, label]], points: [[x, y, label]]} in the room's frame.
+function drawnBy(replay, name) {
+  const root = [...replay.agent(name).active.values()].find(e => e.path.length === 1);
+  return (root && root.vars && root.vars.drawn) || {};
+}
+
+// A robot's own start frame (where it was told it started) to the room's.
+function fromStart(start, x, y) {
+  const a = start[2] * Math.PI / 180;
+  return [start[0] + Math.cos(a) * x - Math.sin(a) * y, start[1] + Math.sin(a) * x + Math.cos(a) * y];
+}
+
+function drawBeliefs(replay, ctx, px, scale, names) {
+  const shown = new Set();
+  ctx.font = "10px sans-serif";
+  for (const name of names) {
+    const drawn = drawnBy(replay, name);
+    for (const [x, y, yaw, length, width, label] of drawn.rects || []) {
+      const key = JSON.stringify([x, y, yaw, length, width]);
+      if (shown.has(key)) continue;
+      shown.add(key);
+      ctx.save(); ctx.translate(...px(x, y)); ctx.rotate(-yaw);
+      ctx.fillStyle = "rgba(255, 220, 80, 0.18)"; ctx.strokeStyle = "#ffd84a"; ctx.setLineDash([4, 3]);
+      ctx.fillRect(-length / 2 * scale, -width / 2 * scale, length * scale, width * scale);
+      ctx.strokeRect(-length / 2 * scale, -width / 2 * scale, length * scale, width * scale);
+      ctx.restore(); ctx.setLineDash([]);
+      ctx.fillStyle = "#ffe9a0"; ctx.fillText(label || "", ...px(x, y));
+    }
+    if (names.length === 1) {
+      for (const [x, y, label] of drawn.points || []) {
+        const [cx, cy] = px(x, y);
+        ctx.strokeStyle = "#7df"; ctx.beginPath(); ctx.arc(cx, cy, 5, 0, 2 * Math.PI); ctx.stroke();
+        ctx.fillStyle = "#bef"; ctx.fillText(label, cx + 6, cy + 10);
+      }
+    }
+    const sensed = ((replay.poses || {}).sensed || {})[name];
+    if (!sensed) continue;
+    for (const [input, reading] of Object.entries(sensed)) {
+      if (input === "start" || !Array.isArray(reading.value)) continue;
+      for (const thing of reading.value) {
+        if (typeof thing !== "object" || thing === null || thing.x === undefined) continue;
+        const [x, y] = fromStart(sensed.start, thing.x, thing.y);
+        const yaw = ((thing.heading || 0) + sensed.start[2]) * Math.PI / 180;
+        const length = thing.length || 0.1, width = thing.width || 0.1;
+        ctx.save(); ctx.translate(...px(x, y)); ctx.rotate(-yaw);
+        ctx.strokeStyle = "#f6f"; ctx.lineWidth = 1.5;
+        ctx.strokeRect(-length / 2 * scale, -width / 2 * scale, length * scale, width * scale);
+        ctx.restore(); ctx.lineWidth = 1;
+      }
+    }
+  }
+}
+
+function drawRoom(replay, canvas, note, beliefs = [], live = false) {
   const ctx = canvas.getContext("2d");
   ctx.clearRect(0, 0, canvas.width, canvas.height);
   const pose = replay.poses;
@@ -217,6 +279,7 @@ function drawRoom(replay, canvas, note, live = false) {
     ctx.fillStyle = lift > 0.02 ? "#5b7cff" : "#2a4cd0";
     ctx.fillRect(-length / 2 * scale, -width / 2 * scale, length * scale, width * scale); ctx.restore();
   }
+  drawBeliefs(replay, ctx, px, scale, beliefs);
   ctx.font = "11px sans-serif";
   for (const [id, x, y] of pose.targets || []) {
     const [cx, cy] = px(x, y);

@@ -1,0 +1,52 @@
+"""Robots really crossing in the simulator, each walking with its range finder (go_along's `look`):
+head-on, at right angles, past a pair standing at its table, round a robot failed in its way, and a crowd of nine parked 0.8 m apart
+in a corner turning round it. The scorer counts robot-robot contacts: none, and every walker gets
+where it was going. Blind (`look` 0), the same walks touch."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import pytest
+from helpers import hfsm_run
+
+DATA = Path(__file__).parent / "data" / "crossing"
+CROWD = ("ahead=[-3.0, 6.0]", "mirror=[-1.0, -1.0]", "cross=[-2.0, 2.0]")  # the grid turned a quarter
+CASES = {
+    "head_on": (),
+    "right_angles": (),
+    "pair_at_work": ("stand_x=-1", "ahead=[5.0, 0.0]"),
+    "failed_in_way": ("ahead=[4.0, 0.0]",),  # a robot failed at the start stands in the way
+    "corner_crowd": CROWD,
+}
+
+
+def walk(capsys: pytest.CaptureFixture[str], scenario: str, params: tuple[str, ...], look: float,
+         seed: int = 0) -> dict[str, Any]:
+    argv: list[object] = [DATA / "walk_to.yaml", "--scenario", DATA / f"{scenario}.yaml", "--seed", seed,
+                          "--json", "--no-video", "--quiet", "--progress", 0, "--max-time", 160,
+                          "--param", f"look={look}"]
+    for param in params:
+        argv += ["--param", param]
+    code, out, _ = hfsm_run(capsys, *argv)
+    assert code == 0
+    result: dict[str, Any] = json.loads(out)
+    return result
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("scenario", sorted(CASES))
+def test_walkers_that_sense_each_other_never_touch(capsys: pytest.CaptureFixture[str], scenario: str) -> None:
+    result = walk(capsys, scenario, CASES[scenario], 1.2)
+    assert result["score"]["robot_collisions"] == 0
+    outcomes = {name: agent["outcome"] for name, agent in result["agents"].items()}
+    assert all(o in ("arrived", "stood", None) for o in outcomes.values()), outcomes  # None: failed
+    assert "arrived" in outcomes.values()
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("scenario", ["head_on", "corner_crowd"])
+def test_blind_the_same_walks_touch(capsys: pytest.CaptureFixture[str], scenario: str) -> None:
+    assert walk(capsys, scenario, CASES[scenario], 0.0)["score"]["robot_collisions"] > 0

@@ -1,0 +1,51 @@
+"""Pairs whose ways meet take turns (hfsm_behaviours/room/claims.turns): one order for the room."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from hfsm_behaviours.room.claims import claim_walls, turns, way
+
+
+def waits(tables: list[dict[str, Any]], width: float = 8.0, depth: float = 6.0) -> dict[str, list[str]]:
+    return turns(claim_walls(tables, width, depth), tables)
+
+
+def test_tables_far_apart_take_no_turns() -> None:
+    tables = [{"id": "a", "x": -2.5, "y": -1.5, "yaw": 0}, {"id": "b", "x": 2.5, "y": 1.5, "yaw": 0}]
+    assert waits(tables) == {"a": [], "b": []}
+
+
+def test_tables_side_by_side_0_8_m_apart_take_turns() -> None:
+    """Their long sides 0.8 m apart: the robots standing between them would stand back to back."""
+    tables = [{"id": "a", "x": 0.0, "y": -0.65, "yaw": 0}, {"id": "b", "x": 0.0, "y": 0.65, "yaw": 0}]
+    got = waits(tables)
+    assert sorted([got["a"], got["b"]]) == [[], ["a"]]  # one waits for the other, by id at equal travel
+
+
+def test_a_table_standing_in_anothers_way_goes_first() -> None:
+    """b is carried east (given), over where a stands: a goes first though b's travel is shorter."""
+    a = {"id": "a", "x": 2.5, "y": 0.0, "yaw": 90, "length": 0.8}
+    b = {"id": "b", "x": 1.0, "y": 0.0, "yaw": 0, "length": 1.4}
+    ways = {"a": way(a, 1, 8.0, 6.0, 0.5), "b": way(b, 1, 8.0, 6.0, 0.5)}
+    assert ways["b"].travel < ways["a"].travel
+    assert turns(ways, [a, b]) == {"a": [], "b": ["a"]}
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.floats(-3.0, 3.0), st.floats(-2.0, 2.0), st.sampled_from([0, 30, 45, 90, 135])),
+                min_size=1, max_size=5))
+def test_no_two_pairs_ever_wait_for_each_other(spots: list[tuple[float, float, int]]) -> None:
+    tables = [{"id": f"t{i}", "x": x, "y": y, "yaw": yaw} for i, (x, y, yaw) in enumerate(spots)]
+    got = waits(tables)
+    order: list[str] = []
+    left = dict(got)
+    while left:  # a table goes once every table it waits for has gone: all go, so no cycle
+        ready = [t for t, after in left.items() if all(a in order for a in after)]
+        assert ready, left
+        order += sorted(ready)
+        for t in ready:
+            del left[t]
