@@ -43,6 +43,17 @@ class Inputs:
         self._cache[name] = value
         return value
 
+    def peek(self, name: str, tick: int) -> Any:
+        """What the machines read of `name` in `tick`, never asking the world: an observer (a condition
+        breakpoint) must not change the run, and a world's read can draw from its random streams."""
+        if tick != self._tick or name not in self._cache:
+            raise NotRead(f"in.{name} was not read by the agent's machines in this tick")
+        return self._cache[name]
+
+
+class NotRead(LookupError):
+    """An input an observer asked for that the machines did not read in the tick."""
+
 
 def seconds(ticks: int, dt: float) -> float:
     """A count of ticks as seconds, rounded to 9 places: 6 * 0.05 is 0.3 (docs/REFERENCE.md#watches)."""

@@ -156,20 +156,68 @@ class Ticking(NullWorld):
         return tick
 
 
-def _run_in(tmp_path: Path, spec: str, world: NullWorld, decisions: list[Decision]) -> list[dict[str, Any]]:
-    path = write(tmp_path, "count", COUNT)
+class Counting(Ticking):
+    """Ticking, counting every read the world is asked for."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.reads = 0
+
+    def read_input(self, agent: str, name: str, tick: int) -> Any:
+        self.reads += 1
+        return tick
+
+
+LOOK = """\
+doc: Counts to 5, a tenth of a second apart, noting the tick it read at each count.
+outcomes: [done]
+vars: {n: 0, seen: 0}
+outputs: {n: "${vars.n}"}
+states:
+  count:
+    do: set
+    with: {n: "${vars.n + 1}", seen: "${in.tick}"}
+    on: {done: rest}
+  rest:
+    choose:
+      - if: "vars.n >= 5"
+        then: done
+      - else: pause
+  pause:
+    do: wait
+    with: {seconds: 0.1}
+    on: {done: count}
+"""
+
+
+def _run_in(tmp_path: Path, spec: str | None, world: NullWorld, decisions: list[Decision],
+            source: str = COUNT) -> list[dict[str, Any]]:
+    path = write(tmp_path, "count", source)
     loaded = load([path], registry=Registry())
-    point = parse(spec, condition_names([m.model for m in loaded.machines.values()], world.inputs()))
+    names = condition_names([m.model for m in loaded.machines.values()], world.inputs())
+    points = [] if spec is None else [parse(spec, names)]
     trace = ListTrace()
-    options = RunOptions("count", ["robot"], {}, breaks=[point], decisions=decisions)
+    options = RunOptions("count", ["robot"], {}, breaks=points, decisions=decisions)
     run(Program(loaded.machines, Registry(), 0.05), world, options, trace)
     return trace.records
 
 
-def test_a_condition_over_an_input(tmp_path: Path) -> None:
-    # a static world runs only the ticks in which something can happen: 0, 2, 4, ... here
-    records = _run_in(tmp_path, "cond:in.tick >= 3", Ticking(), [Decision(0.25, "resume")])
+def test_a_condition_over_an_input_sees_what_the_machines_read(tmp_path: Path) -> None:
+    # the machine reads in.tick at each count: ticks 0, 2, 4 (a static world runs only those)
+    records = _run_in(tmp_path, "cond:in.tick >= 3", Ticking(), [Decision(0.25, "resume")], LOOK)
     assert operators(records) == [(0.25, "pause", "cond:in.tick >= 3"), (0.25, "resume", None)]
+
+
+def test_a_condition_never_asks_the_world(tmp_path: Path) -> None:
+    """A world's read can draw from its random streams: a condition that read inputs itself would
+    make the run differ from the same run without it, and from its replay."""
+    unread, plain = Counting(), Counting()
+    records = _run_in(tmp_path, "cond:in.tick >= 0", unread, [])  # COUNT reads no input
+    assert operators(records) == [] and unread.reads == 0
+    watched = Counting()
+    without = _run_in(tmp_path, None, plain, [], LOOK)
+    with_it = _run_in(tmp_path, "cond:in.tick > 100", watched, [], LOOK)
+    assert watched.reads == plain.reads == 5 and with_it[1:] == without[1:]  # [0]: the run's flags
 
 
 @settings(max_examples=10, deadline=None)
