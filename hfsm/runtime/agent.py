@@ -140,6 +140,18 @@ class Region:
         return [*self.owner.path(), self.spec.name]
 
 
+def frames(frame: Frame) -> Iterator[Frame]:
+    """Every running machine frame at and below `frame`, outermost first, regions in their order."""
+    yield frame
+    below = frame.below
+    if below.__class__ is Frame:
+        yield from frames(below)
+    elif below.__class__ is list:
+        for region in below:
+            if region.below.__class__ is Frame:
+                yield from frames(region.below)
+
+
 def leaves(frame: Frame) -> Iterator[Frame | Region]:
     """The innermost running frames and regions below `frame`, in region order."""
     below = frame.below

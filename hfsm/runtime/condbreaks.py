@@ -8,11 +8,11 @@ what the run does."""
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
+from collections.abc import Sequence
 from typing import Any
 
 from hfsm.expr import ExprValueError, Scope
-from hfsm.runtime.agent import Agent, Frame
+from hfsm.runtime.agent import Agent, frames
 from hfsm.runtime.breaks import Breaks
 from hfsm.runtime.live import NotRead
 
@@ -39,25 +39,13 @@ def check(breaks: Breaks, agents: Sequence[Agent], tick: int) -> None:
 def _holds(test: Any, agent: Agent, tick: int) -> bool | None:
     """Whether the condition holds for `agent`; None when it reads an input not read in this tick."""
     known: dict[str, Any] = {}
-    for frame in _frames(agent.root):  # type: ignore[arg-type]
+    for frame in frames(agent.root):  # type: ignore[arg-type]
         known.update(frame.vars)
     inputs = _Inputs(agent, tick)
     try:
         return test(Scope({}, known, agent.name, inputs)) is True
     except Exception:  # a condition that cannot be evaluated is false
         return None if inputs.unread else False
-
-
-def _frames(frame: Frame) -> Iterator[Frame]:
-    """The running machine frames of an agent, outermost first (regions in their order)."""
-    yield frame
-    below = frame.below
-    if below.__class__ is Frame:
-        yield from _frames(below)
-    elif below.__class__ is list:
-        for region in below:
-            if region.below.__class__ is Frame:
-                yield from _frames(region.below)
 
 
 class _Inputs:

@@ -13,7 +13,7 @@ from collections.abc import Iterator
 
 from hfsm.autonomy import FULL, JOIN, LEVELS
 from hfsm.primitive import Message
-from hfsm.runtime.agent import HELD, Agent, Event, Frame, leaves
+from hfsm.runtime.agent import HELD, Agent, Event, Frame, frames, leaves
 from hfsm.runtime.cancel import Cancelling
 from hfsm.runtime.ledger import Ledger
 from hfsm.runtime.parts import ArcsPart, RegionsPart
@@ -38,15 +38,7 @@ class Hold:
 
 def held_frames(frame: Frame) -> Iterator[Frame]:
     """The frames at and below `frame` that hold an arc, outermost first, regions in their order."""
-    if frame.held is not None:
-        yield frame
-    below = frame.below
-    if below.__class__ is Frame:
-        yield from held_frames(below)
-    elif below.__class__ is list:
-        for region in below:
-            if region.below.__class__ is Frame:
-                yield from held_frames(region.below)
+    return (f for f in frames(frame) if f.held is not None)
 
 
 def hold_text(agent: Agent) -> str:

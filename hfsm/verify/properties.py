@@ -9,7 +9,7 @@ from typing import Any
 from hfsm.builtins.barrier import Barrier
 from hfsm.builtins.wait import Wait
 from hfsm.builtins.wait_for import WaitFor
-from hfsm.runtime.agent import Agent, Frame, Region, leaves
+from hfsm.runtime.agent import Agent, Frame, Region, frames, leaves
 from hfsm.runtime.engine import Engine
 from hfsm.runtime.run import _next_tick
 from hfsm.verify.props import Props
@@ -115,17 +115,7 @@ def _upcoming(engine: Engine) -> int | None:
 
 
 def _frames(agent: Agent) -> Iterator[Frame]:
-    if agent.root is None:
-        return
-    stack: list[Any] = [agent.root]
-    while stack:
-        frame = stack.pop()
-        yield frame
-        below = frame.below
-        if below.__class__ is Frame:
-            stack.append(below)
-        elif below.__class__ is list:
-            stack.extend(r.below for r in below if r.below.__class__ is Frame)
+    return frames(agent.root) if agent.root is not None else iter(())
 
 
 def _in(frame: Frame, path: tuple[str, ...]) -> bool:
