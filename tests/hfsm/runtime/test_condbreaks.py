@@ -168,26 +168,9 @@ class Counting(Ticking):
         return tick
 
 
-LOOK = """\
-doc: Counts to 5, a tenth of a second apart, noting the tick it read at each count.
-outcomes: [done]
-vars: {n: 0, seen: 0}
-outputs: {n: "${vars.n}"}
-states:
-  count:
-    do: set
-    with: {n: "${vars.n + 1}", seen: "${in.tick}"}
-    on: {done: rest}
-  rest:
-    choose:
-      - if: "vars.n >= 5"
-        then: done
-      - else: pause
-  pause:
-    do: wait
-    with: {seconds: 0.1}
-    on: {done: count}
-"""
+LOOK = (COUNT.replace("doc: Counts to 5, a tenth of a second apart.", "doc: Counts to 5, reading in.tick at each count.")
+        .replace("vars: {n: 0}", "vars: {n: 0, seen: 0}")
+        .replace('with: {n: "${vars.n + 1}"}', 'with: {n: "${vars.n + 1}", seen: "${in.tick}"}'))
 
 
 def _run_in(tmp_path: Path, spec: str | None, world: NullWorld, decisions: list[Decision],
