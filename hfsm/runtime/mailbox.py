@@ -1,7 +1,8 @@
 """An agent's mailbox: its messages in arrival order, and how many of each name it holds.
 
 Messages nobody takes stay for the rest of the run (docs/REFERENCE.md#messages-between-agents), so a
-long run of a large team holds thousands. Most looks into a mailbox find nothing: the counts answer
+long run of a large team holds thousands, unless sent with `keep: last` (a status: the sender's newest
+copy replaces the one not yet taken). Most looks into a mailbox find nothing: the counts answer
 those at once, and only a look that will find a message walks the list.
 """
 
@@ -55,6 +56,19 @@ class Mailbox(list[Message]):
     def clear(self) -> None:
         super().clear()
         self.counts.clear()
+
+    def replace(self, message: Message) -> bool:
+        """Append `message` in place of every message of its name from its sender not yet taken
+        (`send`'s `keep: last`): whether there was one. Appended either way."""
+        name, sender = message.name, message.sender
+        found = name in self.counts and any(m.name == name and m.sender == sender for m in self)
+        if found:
+            kept = [m for m in self if m.name != name or m.sender != sender]
+            self._count(name, len(kept) - len(self))
+            super().clear()
+            super().extend(kept)
+        self.append(message)
+        return found
 
     def take(self, names: Collection[str], prefix: str = "") -> Message | None:
         """Remove and return the earliest message whose name is in `names`, sent under the scope

@@ -73,8 +73,8 @@ class RunContext:
     def receive(self, name: str) -> Message | None:
         return self._agent.take_message((name,), radio_at(self._where).prefix)
 
-    def send(self, message: str, to: str = "others", **data: Any) -> None:
-        self._host.send(self._agent, self._where, message, to, data)
+    def send(self, message: str, to: str = "others", *, keep: str = "all", **data: Any) -> None:
+        self._host.send(self._agent, self._where, message, to, data, keep)
 
 
 class PrimitiveActivity:

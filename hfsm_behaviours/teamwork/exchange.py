@@ -90,7 +90,7 @@ def tararc_exchange(ctx: Context, *, message: str, data: dict[str, Any], team: l
             said = {"held": dict(sorted(hold.held.items()))}
             if hold.team is not None:
                 said["team"] = sorted(hold.team | {ctx.agent})
-            ctx.send(message, round=0, data=said)
+            ctx.send(message, keep="last", round=0, data=said)  # holdings only grow: the newest says all
             due = ctx.tick + pause
         return hold.agreed(ctx.tick, start, quiet)
 

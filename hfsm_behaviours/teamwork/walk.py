@@ -87,7 +87,7 @@ def room_give_way(ctx: Context, *, walk: list[Any], every: float = 1.0, quiet: f
     def free() -> bool:
         nonlocal next_say
         if ctx.time >= next_say:
-            ctx.send(WALK, round=0, data={"walk": walk, "since": since})
+            ctx.send(WALK, keep="last", round=0, data={"walk": walk, "since": since})  # a walker's latest
             next_say = ctx.time + every
         while (m := ctx.receive(WALK)) is not None:
             data = m.data.get("data", {})
