@@ -20,68 +20,87 @@ class Mailbox(list[Message]):
     def __init__(self, messages: Iterable[Message] = ()) -> None:
         super().__init__(messages)
         self.counts: dict[str, int] = {}
+        self.pairs: dict[tuple[str, str], int] = {}  # how many of each (name, sender): for `replace`
         for message in self:
-            self._count(message.name, 1)
+            self._count(message, 1)
 
     def __reduce__(self) -> tuple[type[Mailbox], tuple[list[Message]]]:
         """Copied and pickled (hfsm-verify's states) as its messages, counted again when rebuilt."""
         return (Mailbox, (list(self),))
 
-    def _count(self, name: str, change: int) -> None:
-        left = self.counts.get(name, 0) + change
+    def _count(self, message: Message, change: int) -> None:
+        name, counts, pairs = message.name, self.counts, self.pairs
+        left = counts.get(name, 0) + change
         if left:
-            self.counts[name] = left
+            counts[name] = left
         else:
-            del self.counts[name]
+            del counts[name]
+        key = (name, message.sender)
+        left = pairs.get(key, 0) + change
+        if left:
+            pairs[key] = left
+        else:
+            del pairs[key]
 
     def append(self, message: Message) -> None:
         super().append(message)
-        self._count(message.name, 1)
+        self._count(message, 1)
 
     def insert(self, index: SupportsIndex, message: Message) -> None:
         super().insert(index, message)
-        self._count(message.name, 1)
+        self._count(message, 1)
 
     def pop(self, index: SupportsIndex = -1) -> Message:
         message = super().pop(index)
-        self._count(message.name, -1)
+        self._count(message, -1)
         return message
 
     def __delitem__(self, index: SupportsIndex | slice) -> None:
         if isinstance(index, slice):
             raise TypeError("a mailbox deletes one message at a time")
-        self._count(self[index].name, -1)
+        self._count(self[index], -1)
         super().__delitem__(index)
 
     def clear(self) -> None:
         super().clear()
         self.counts.clear()
+        self.pairs.clear()
 
     def replace(self, message: Message) -> bool:
         """Append `message` in place of every message of its name from its sender not yet taken
         (`send`'s `keep: last`): whether there was one. Appended either way."""
         name, sender = message.name, message.sender
-        found = name in self.counts and any(m.name == name and m.sender == sender for m in self)
-        if found:
-            kept = [m for m in self if m.name != name or m.sender != sender]
-            self._count(name, len(kept) - len(self))
-            super().clear()
-            super().extend(kept)
+        many = found = self.pairs.get((name, sender), 0)
+        if many:
+            i = 0
+            while many:
+                old = self[i]
+                if old.sender == sender and old.name == name:
+                    del self[i]
+                    many -= 1
+                else:
+                    i += 1
         self.append(message)
-        return found
+        return found > 0
 
     def take(self, names: Collection[str], prefix: str = "") -> Message | None:
         """Remove and return the earliest message whose name is in `names`, sent under the scope
         whose names begin with `prefix`: `scope/name`, or a bare name outside every scope."""
         counts = self.counts
         if not prefix:
-            if not any(name in counts for name in names):
+            for name in names:
+                if name in counts:
+                    break
+            else:
                 return None
             for i, message in enumerate(self):
                 if message.name in names:
                     return self.pop(i)
             return None
-        if not any(prefix + name in counts for name in names):
+        for name in names:
+            if prefix + name in counts:
+                break
+        else:
             return None
         n = len(prefix)
         for i, message in enumerate(self):

@@ -73,6 +73,10 @@ def test_counts_follow_the_list_and_take_is_the_walk(ops: list[tuple[object, ...
         for message in plain:
             counts[message.name] = counts.get(message.name, 0) + 1
         assert box.counts == counts
+        pairs: dict[tuple[str, str], int] = {}
+        for message in plain:
+            pairs[message.name, message.sender] = pairs.get((message.name, message.sender), 0) + 1
+        assert box.pairs == pairs
 
 
 def test_a_mailbox_made_from_messages_counts_them() -> None:
