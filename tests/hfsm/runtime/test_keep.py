@@ -12,6 +12,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from hfsm.primitive import Context, primitive
+from hfsm.registry import Registry
 from tests.helpers import execute, write
 
 TALK = """
@@ -178,3 +180,50 @@ states:
     with: {got: "${vars.got + [[vars.one, vars.n]]}"}
     on: {done: take}
 """
+
+
+@primitive(outcomes=["said"])
+def tell_three(ctx: Context, *, keep: str = "last") -> str:
+    """Say `status` three times, a tick apart, as `keep`."""
+    for n in range(3):
+        ctx.send("status", to="b", keep=keep, n=n)
+        ctx.wait()
+    return "said"
+
+
+def test_a_primitive_sends_a_status_and_a_bad_keep_is_its_error(tmp_path: Path) -> None:
+    top = write(tmp_path, "prim", """
+        params:
+          keep: {type: str, default: last}
+        vars: {got: [], one: -1}
+        outcomes: [done]
+        outputs: {got: "${vars.got}"}
+        states:
+          who:
+            choose:
+              - if: "agent.id == 'a'"
+                then: tell
+              - else: later
+          tell:
+            do: tell_three
+            with: {keep: "${params.keep}"}
+            on: {said: done}
+          later:
+            do: wait
+            with: {seconds: 0.5}
+            on: {done: take}
+          take:
+            do: wait_for
+            with: {message: status}
+            save: {one: n}
+            timer: 0.1
+            on: {received: keep, timeout: done}
+          keep:
+            do: set
+            with: {got: "${vars.got + [vars.one]}"}
+            on: {done: take}
+        """)
+    result, _ = execute(top, agents=("a", "b"), registry=Registry([tell_three]))
+    assert result.agents["b"].outputs["got"] == [2]
+    result, _ = execute(top, agents=("a", "b"), params={"keep": "newest"}, registry=Registry([tell_three]))
+    assert result.error is not None and "keep must be 'all' or 'last', not 'newest'" in result.error
