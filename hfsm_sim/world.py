@@ -94,8 +94,9 @@ class World:
         raised = any(r._arms_active() for r in robots if isinstance(r, Robot))  # commands hold over the span
         for robot in robots:
             robot._before_advance(dt)
+        moving = [r for r in robots if r._cmd != (0.0, 0.0, 0.0)]  # a body standing still has no step
         while self._steps < end:
-            for robot in robots:
+            for robot in moving:
                 robot._pre_step(dt)
             p.stepSimulation(physicsClientId=cid)
             self._steps += 1

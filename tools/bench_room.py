@@ -1,6 +1,6 @@
 """Wall and CPU seconds per simulated second of whole room runs, this tree against another revision.
 
-Usage: .venv/bin/python tools/bench_room.py [--rev main] [--robots 4,8,12] [--seconds 60]
+Usage: .venv/bin/python tools/bench_room.py [--rev main] [--now REV] [--robots 4,8,12] [--seconds 60]
        [--rounds 3] [--no-doc]
 
 Rooms of 4, 8 and 12 humanoids are drawn by the generator (hfsm_sim.roomgen: the first development
@@ -8,10 +8,11 @@ seed of the strata below with that many robots) and written to a temporary folde
 `hfsm-run machines/clear_room.yaml --scenario FILE --seed 0 --json --no-video --max-time SECONDS
 --trace FILE` in a fresh process, once with this tree's code and once with `git archive REV` of the
 code and machines unpacked into a temporary folder and put first on PYTHONPATH (as
-tools/bench_before.py does), in turn (order alternated by round). Per run: wall seconds
-(`perf_counter` around the process) and CPU seconds (user + system of the child), over the simulated
-seconds it ran; a figure is the median over rounds. The traces of the two trees are compared byte
-for byte (sha256) in every round. Rewrites the bench_room section of docs/PERFORMANCE.md.
+tools/bench_before.py does), in turn (order alternated by round); `--now REV` runs a revision
+unpacked the same way instead of this tree (so the tree can change while the bench runs). Per run:
+wall seconds (`perf_counter` around the process) and CPU seconds (user + system of the child),
+over the simulated seconds it ran; a figure is the median over rounds. The traces of the two trees
+are compared byte for byte (sha256) in every round. Rewrites the bench_room section of docs/PERFORMANCE.md.
 """
 
 from __future__ import annotations
@@ -86,7 +87,7 @@ def run_once(tree: Path, scenario: Path, seconds: float, trace: Path) -> dict[st
     return {"wall": wall, "cpu": cpu, "simulated": simulated, "sha": digest}
 
 
-def bench(rev: str, robots: list[int], seconds: float, rounds: int) -> dict[str, Any]:
+def bench(rev: str, robots: list[int], seconds: float, rounds: int, now: str | None) -> dict[str, Any]:
     rooms = {n: pick_room(n) for n in robots}
     rows: dict[int, dict[str, list[dict[str, Any]]]] = {n: {"before": [], "now": []} for n in robots}
     with tempfile.TemporaryDirectory() as tmp:
@@ -95,6 +96,10 @@ def bench(rev: str, robots: list[int], seconds: float, rounds: int) -> dict[str,
         old.mkdir()
         short = unpack(rev, old)
         trees = {"before": old, "now": ROOT}
+        if now is not None:
+            trees["now"] = base / "now"
+            trees["now"].mkdir()
+            now = unpack(now, trees["now"])
         for n, (stratum, seed, scenario) in rooms.items():
             path = base / f"{stratum}-{seed}.yaml"
             roomgen.write(path, scenario)
@@ -106,7 +111,7 @@ def bench(rev: str, robots: list[int], seconds: float, rounds: int) -> dict[str,
                     print(f"{n} robots ({stratum}-{seed}) round {r + 1} {which}: wall {run['wall']:.1f} s, "
                           f"CPU {run['cpu']:.1f} s for {run['simulated']:.1f} simulated s", flush=True)
     return {"rev": rev, "short": short, "rooms": {n: rooms[n][:2] for n in robots}, "rows": rows,
-            "seconds": seconds, "rounds": rounds}
+            "seconds": seconds, "rounds": rounds, "now": now}
 
 
 def _median(runs: list[dict[str, Any]], key: str) -> float:
@@ -118,7 +123,8 @@ def report(data: dict[str, Any], took: float) -> list[str]:
     load = os.getloadavg()[0]
     lines = [
         f"Measured by `tools/bench_room.py` on {platform.machine()}, {os.cpu_count()} CPUs, Python "
-        f"{platform.python_version()}, {time.strftime('%Y-%m-%d')}; before: `{rev}` ({short}); load "
+        f"{platform.python_version()}, {time.strftime('%Y-%m-%d')}; before: `{rev}` ({short}), now: "
+        f"{data['now'] or 'this tree'}; load "
         f"average at the end {load:.1f} (shared 2-core VM: CPU seconds are the steadier figure); "
         f"{took / 60:.0f} min in all.",
         f"Command: `.venv/bin/python tools/bench_room.py --rev {rev} --robots "
@@ -145,13 +151,14 @@ def report(data: dict[str, Any], took: float) -> list[str]:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--rev", default="main", help="the revision to compare with (default main)")
+    parser.add_argument("--now", help="a revision to run as now (default: this tree as it is)")
     parser.add_argument("--robots", default="4,8,12", help="room sizes, comma-separated")
     parser.add_argument("--seconds", type=float, default=60.0, help="simulated seconds a run")
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--no-doc", action="store_true", help="print, do not rewrite docs/PERFORMANCE.md")
     args = parser.parse_args()
     begin = time.perf_counter()
-    data = bench(args.rev, [int(n) for n in args.robots.split(",")], args.seconds, args.rounds)
+    data = bench(args.rev, [int(n) for n in args.robots.split(",")], args.seconds, args.rounds, args.now)
     lines = report(data, time.perf_counter() - begin)
     print("\n".join(lines))
     if not args.no_doc:
