@@ -128,9 +128,9 @@ class Base:
         height = np.full(beams, scanner.height)
         starts = np.stack([x + c * inner, y + s * inner, height], axis=1).tolist()
         ends = np.stack([x + c * reach, y + s * reach, height], axis=1).tolist()
-        hits = p.rayTestBatch(starts, ends, numThreads=1, physicsClientId=self._cid)
-        body = np.fromiter((h[0] for h in hits), dtype=int, count=beams)
-        fraction = np.fromiter((h[2] for h in hits), dtype=float, count=beams)
+        ids, _, fractions, *_ = zip(*p.rayTestBatch(starts, ends, numThreads=1, physicsClientId=self._cid),
+                                    strict=True)
+        body, fraction = np.array(ids, dtype=int), np.array(fractions, dtype=float)
         noise = scanner.rng.normal(0.0, SCAN_NOISE, beams)
         ranges = np.minimum(reach, inner + fraction * (reach - inner) + noise).round(4)
         scan: list[float] = np.where(body < 0, reach, ranges).tolist()
