@@ -127,7 +127,8 @@ def report(data: dict[str, Any], took: float) -> list[str]:
         f"{data['now'] or 'this tree'}; load "
         f"average at the end {load:.1f} (shared 2-core VM: CPU seconds are the steadier figure); "
         f"{took / 60:.0f} min in all.",
-        f"Command: `.venv/bin/python tools/bench_room.py --rev {rev} --robots "
+        f"Command: `.venv/bin/python tools/bench_room.py --rev {rev}"
+        f"{' --now ' + data['now'] if data['now'] else ''} --robots "
         f"{','.join(str(n) for n in data['rows'])} --seconds {data['seconds']:g} --rounds {data['rounds']}`"
         f" (each run `hfsm-run machines/clear_room.yaml --scenario FILE --seed 0 --json --no-video "
         f"--max-time {data['seconds']:g} --trace FILE`, start-up included; medians of the rounds, the "
