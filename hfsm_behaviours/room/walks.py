@@ -9,9 +9,12 @@ was: failed robots, waiting spares, pairs at work), and costs `CORRIDOR` times m
 claimed carry corridor (a pair may carry through it). It is then shortened where a straight line
 stays as clear.
 
-Right of way: a walker says its path; two walkers whose paths come within `2 * HALF` m of each
-other do not walk at once: the one that said its walk first (then the smaller id) goes, the other
-waits until it stops saying it (arrived), for a bounded time.
+Right of way: a walker says its path and, as it walks, where it is; two walkers whose paths come
+within `2 * HALF` m of each other do not walk at once: the one that said its walk first (then the
+smaller id) goes, the other waits while what is left of the first one's way (`left_of`, from where it
+said it is) still comes that near the first `HEAD` m of its own (`head`: beyond, it would meet the
+first one only behind it or after it passed, and both sense each other), or until the first stops
+saying it (arrived), for a bounded time.
 
 Everything here is pure and in the room's frame.
 """
@@ -36,6 +39,7 @@ KEEP = 0.8  # metres from a walker's centre to a robot standing still, at least
 CORRIDOR = 4.0  # a metre walked in a claimed corridor costs this many
 GAP = 1.2  # metres from a table's centre line to a robot's place beside it
 HALF = 0.45  # half the width of the strip a walker sweeps
+HEAD = 2.0  # metres of its way a walker about to set off keeps clear of an earlier walker's
 
 
 @dataclass(frozen=True)
@@ -205,3 +209,27 @@ def conflict(mine: Sequence[Point], theirs: Sequence[Point], half: float = HALF)
 def goes_first(mine: tuple[float, str], theirs: tuple[float, str]) -> bool:
     """Right of way between two walkers: (when each said its walk first, its id); the smaller goes."""
     return (round(mine[0], 6), mine[1]) < (round(theirs[0], 6), theirs[1])
+
+
+def left_of(path: Sequence[Point], at: Point) -> list[Point]:
+    """What is left of a walk (its start then its waypoints) for a walker at `at`: `at`, then the
+    waypoints after the stretch of the walk nearest it."""
+    if len(path) < 2:
+        return [at]
+    stretches = list(itertools.pairwise(path))
+    nearest = min(range(len(stretches)), key=lambda k: _segment_gap(at, at, *stretches[k]))
+    return [at, *path[nearest + 1:]]
+
+
+def head(path: Sequence[Point], metres: float = HEAD) -> list[Point]:
+    """The first `metres` of a walk (its start then its waypoints)."""
+    out, left = [path[0]], metres
+    for a, b in itertools.pairwise(path):
+        step = math.dist(a, b)
+        if step >= left:
+            t = left / step if step > 0 else 0.0
+            out.append((a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t))
+            return out
+        out.append(b)
+        left -= step
+    return out

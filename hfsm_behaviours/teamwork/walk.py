@@ -17,6 +17,8 @@ from hfsm_behaviours.room.walks import (
     conflict,
     corridor,
     goes_first,
+    head,
+    left_of,
     place_for,
     plan_walk,
     table_where,
@@ -72,15 +74,19 @@ def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
                    walk=[[round(p[0], 4), round(p[1], 4)] for p in [me, *points]], length=round(length, 3))
 
 
-@primitive(outcomes=["clear", "timeout"], outputs=["since"])
+@primitive(outcomes=["clear", "timeout"], outputs=["since", "waited"])
 def room_give_way(ctx: Context, *, walk: list[Any], every: float = 1.0, quiet: float = 2.5,
                   limit: float = 45.0) -> Outcome:
-    """Say this walk (`room_walk`, every `every` s) and wait while another walker whose path comes
-    near it has the right of way (said its walk first, then the smaller id) and still says it (heard
-    within `quiet` s), for `limit` s at most. `since`: when this robot first said its walk (the
-    walkers it meets later give way to it)."""
+    """Say this walk (`room_walk`, every `every` s) and wait while another walker with the right of
+    way (said its walk first, then the smaller id) still says it (heard within `quiet` s) and what is
+    left of its way comes near the first metres of this one (`walks.conflict`, `walks.head`): all of
+    its way until it says where it is (its `pose` and `start` as room_pulse says them), then only the
+    rest of it from there on, so that a walker waits only until the first has passed or is ahead
+    of it; for `limit` s at most.
+    `since`: when this robot first said its walk (the walkers it meets later give way to it);
+    `waited`: the seconds it waited."""
     since = round(ctx.time, 6)
-    mine = [(float(p[0]), float(p[1])) for p in walk]
+    mine = head([(float(p[0]), float(p[1])) for p in walk])
     heard: dict[str, tuple[float, list[Point], float]] = {}
     next_say = ctx.time
 
@@ -93,12 +99,15 @@ def room_give_way(ctx: Context, *, walk: list[Any], every: float = 1.0, quiet: f
             data = m.data.get("data", {})
             if m.sender != ctx.agent and data.get("walk"):
                 path = [(float(p[0]), float(p[1])) for p in data["walk"]]
+                pose, start = m.data.get("pose"), m.data.get("start")
+                if pose and start:
+                    x, y = to_room(start, [pose["x"], pose["y"]])
+                    path = left_of(path, (x, y))
                 heard[m.sender] = (float(data.get("since", 0.0)), path, ctx.time)
         if ctx.time - since < every + ctx.dt:  # hear the others' walks first
             return False
         return not any(ctx.time - t <= quiet and goes_first((s, r), (since, ctx.agent)) and conflict(mine, p)
                        for r, (s, p, t) in heard.items())
 
-    if ctx.wait_until(free, timeout=limit):
-        return Outcome("clear", since=since)
-    return Outcome("timeout", since=since)
+    clear = ctx.wait_until(free, timeout=limit)
+    return Outcome("clear" if clear else "timeout", since=since, waited=round(ctx.time - since, 6))

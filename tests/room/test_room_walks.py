@@ -16,6 +16,7 @@ from hfsm_behaviours.room.walks import (
     conflict,
     corridor,
     goes_first,
+    left_of,
     place_for,
     places,
     plan_walk,
@@ -89,6 +90,22 @@ def test_walks_far_apart_do_not_conflict_and_crossing_ones_do() -> None:
     assert not conflict([(-3.0, -2.0), (3.0, -2.0)], [(-3.0, 2.0), (3.0, 2.0)])
     assert conflict([(-3.0, 0.0), (3.0, 0.0)], [(0.0, -3.0), (0.0, 3.0)])
     assert conflict([(0.0, 0.0), (3.0, 0.0)], [(0.0, 2 * HALF - 0.01), (3.0, 2 * HALF - 0.01)])
+
+
+def test_what_is_left_of_a_way_starts_where_the_walker_is() -> None:
+    way = [(-3.0, 0.0), (0.0, 0.0), (0.0, 3.0)]
+    assert left_of(way, (-1.0, 0.1)) == [(-1.0, 0.1), (0.0, 0.0), (0.0, 3.0)]
+    assert left_of(way, (0.1, 2.0)) == [(0.1, 2.0), (0.0, 3.0)]
+    assert left_of([(1.0, 1.0)], (1.2, 1.0)) == [(1.2, 1.0)]
+    crossing = [(0.0, -3.0), (0.0, 3.0)]  # once past the crossing, the first no longer meets it
+    assert conflict(crossing, left_of([(-3.0, 0.0), (3.0, 0.0)], (-1.0, 0.0)))
+    assert not conflict(crossing, left_of([(-3.0, 0.0), (3.0, 0.0)], (1.0, 0.0)))
+
+
+@given(st.lists(points, min_size=2, max_size=5), points)
+def test_what_is_left_is_never_more_than_the_way(way: list[tuple[float, float]], at: tuple[float, float]) -> None:
+    left = left_of(way, at)
+    assert left[0] == at and left[1:] == way[len(way) - len(left) + 1:]
 
 
 @given(st.floats(0, 100), st.floats(0, 100), st.sampled_from(["r1", "r2", "r10"]), st.sampled_from(["r3", "r4"]))
