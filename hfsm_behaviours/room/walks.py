@@ -11,7 +11,7 @@ stays as clear.
 
 Right of way: a walker says its path and, as it walks, where it is; two walkers whose paths come
 within `2 * HALF` m of each other do not walk at once: the one that said its walk first (then the
-smaller id) goes, the other waits while what is left of the first one's way (`left_of`, from where it
+fewer robots standing in its way, then the smaller id) goes, the other waits while what is left of the first one's way (`left_of`, from where it
 said it is) still comes that near the first `HEAD` m of its own (`head`: beyond, it would meet the
 first one only behind it or after it passed, and both sense each other), or until the first stops
 saying it (arrived), for a bounded time.
@@ -89,12 +89,27 @@ def places(table: Mapping[str, Any], at: Point, gap: float = GAP) -> list[Point]
 
 
 def place_for(table: Mapping[str, Any], at: Point, me: Point, others: Sequence[Point],
-              gap: float = GAP) -> Point:
-    """Of the two places beside the table, the one with fewer robots within `KEEP` m of it (a
-    partner or a failed robot stands at the other), then the nearer one to `me`."""
-    def key(p: Point) -> tuple[int, float]:
-        return (sum(math.dist(p, o) < KEEP for o in others), math.dist(p, me))
-    return min(places(table, at, gap), key=key)
+              gap: float = GAP, partner: Point | None = None, leads: bool = True) -> Point:
+    """Of the two places beside the table, the one with fewer robots within `KEEP` m of it (a failed
+    robot stands at the other), then the nearer one to `me`. With a `partner` (where it said it
+    stands), the pair takes one place each: the one its partner stands at (within `KEEP` m) is the
+    partner's; when it stands at neither, the pair's leader (`leads`: this robot, else the partner)
+    takes the place the rule above gives it and the other robot the other place, so that two robots
+    walking to one table never head for the same side."""
+    sides = places(table, at, gap)
+
+    def key(p: Point, who: Point) -> tuple[int, float]:
+        return (sum(math.dist(p, o) < KEEP for o in others if o != partner), math.dist(p, who))
+    if partner is None:
+        return min(sides, key=lambda p: key(p, me))
+    taken = [p for p in sides if math.dist(p, partner) < KEEP]
+    if taken:
+        return sides[1] if taken[0] == sides[0] else sides[0]
+    leader = me if leads else partner
+    first = min(sides, key=lambda p: key(p, leader))
+    if leads:
+        return first
+    return sides[1] if first == sides[0] else sides[0]
 
 
 def _node(p: Point, scene: Scene) -> tuple[int, int]:
@@ -206,9 +221,16 @@ def conflict(mine: Sequence[Point], theirs: Sequence[Point], half: float = HALF)
     return any(_segment_gap(a, b, c, d) < 2 * half for a, b in ours for c, d in other)
 
 
-def goes_first(mine: tuple[float, str], theirs: tuple[float, str]) -> bool:
-    """Right of way between two walkers: (when each said its walk first, its id); the smaller goes."""
-    return (round(mine[0], 6), mine[1]) < (round(theirs[0], 6), theirs[1])
+def goes_first(mine: tuple[float, int, str], theirs: tuple[float, int, str]) -> bool:
+    """Right of way between two walkers: (when each said its walk first, how many robots stand in its
+    way (`crowd`: in a packed start, those on the outside get out first), its id); the smaller goes."""
+    return (round(mine[0], 6), mine[1], mine[2]) < (round(theirs[0], 6), theirs[1], theirs[2])
+
+
+def crowd(walk: Sequence[Point], standing: Sequence[Point], half: float = HALF) -> int:
+    """How many of the robots `standing` a walk (its start then its waypoints) passes within `half` m
+    of: robots in its way, not those beside it (parked 0.8 m apart, a neighbour is not in the way)."""
+    return sum(conflict(walk, [p], half / 2) for p in standing)
 
 
 def left_of(path: Sequence[Point], at: Point) -> list[Point]:
