@@ -11,10 +11,10 @@ stays as clear.
 
 Right of way: a walker says its path and, as it walks, where it is; two walkers whose paths come
 within `2 * HALF` m of each other do not walk at once: the one that said its walk first (then the
-fewer robots standing in its way, then the smaller id) goes, the other waits while what is left of the first one's way (`left_of`, from where it
-said it is) still comes that near the first `HEAD` m of its own (`head`: beyond, it would meet the
-first one only behind it or after it passed, and both sense each other), or until the first stops
-saying it (arrived), for a bounded time.
+one with fewer robots standing in its way, then the smaller id) goes, the other waits while what is
+left of the first one's way (`left_of`, from where it said it is) still comes that near the first
+`HEAD` m of its own (`head`: beyond, it would meet the first one only behind it or after it passed,
+and both sense each other), or until the first stops saying it (arrived), for a bounded time.
 
 Everything here is pure and in the room's frame.
 """

@@ -79,8 +79,8 @@ def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
 
 
 @primitive(outcomes=["clear", "timeout"], outputs=["since", "crowd", "waited"])
-def room_give_way(ctx: Context, *, walk: list[Any], standing: dict[str, Any] | None = None, every: float = 1.0,
-                  quiet: float = 2.5, limit: float = 90.0) -> Outcome:
+def room_give_way(ctx: Context, *, walk: list[Any], standing: dict[str, Any] | None = None,
+                  every: float = 1.0, quiet: float = 2.5, limit: float = 90.0) -> Outcome:
     """Say this walk (`room_walk`, every `every` s) and wait while another walker with the right of
     way (said its walk first, then fewer robots `standing` in its way ({robot: [x, y]}, room frame:
     `walks.crowd`; in a packed start the robots on the outside go first), then the smaller id) still
@@ -115,8 +115,9 @@ def room_give_way(ctx: Context, *, walk: list[Any], standing: dict[str, Any] | N
                 heard[m.sender] = (float(data.get("since", 0.0)), int(data.get("crowd", 0)), path, ctx.time)
         if ctx.time - since < every + ctx.dt:  # hear the others' walks first
             return False
-        return not any(ctx.time - t <= quiet and goes_first((s, n, r), (since, many, ctx.agent)) and conflict(mine, p)
-                       for r, (s, n, p, t) in heard.items())
+        return not any(ctx.time - t <= quiet and goes_first((s, n, r), (since, many, ctx.agent))
+                       and conflict(mine, p) for r, (s, n, p, t) in heard.items())
 
     clear = ctx.wait_until(free, timeout=limit)
-    return Outcome("clear" if clear else "timeout", since=since, crowd=many, waited=round(ctx.time - since, 6))
+    waited = round(ctx.time - since, 6)
+    return Outcome("clear" if clear else "timeout", since=since, crowd=many, waited=waited)
