@@ -92,24 +92,24 @@ def place_for(table: Mapping[str, Any], at: Point, me: Point, others: Sequence[P
               gap: float = GAP, partner: Point | None = None, leads: bool = True) -> Point:
     """Of the two places beside the table, the one with fewer robots within `KEEP` m of it (a failed
     robot stands at the other), then the nearer one to `me`. With a `partner` (where it said it
-    stands), the pair takes one place each: the one its partner stands at (within `KEEP` m) is the
-    partner's; when it stands at neither, the pair's leader (`leads`: this robot, else the partner)
-    takes the place the rule above gives it and the other robot the other place, so that two robots
-    walking to one table never head for the same side."""
+    stands), the pair takes one place each, the way that puts both nearer their places (a partner
+    standing at one keeps it); when both ways are as near, the pair's leader (`leads`: this robot,
+    else the partner) takes the place the rule above gives it and the other robot the other place:
+    two robots walking to one table never head for the same side."""
     sides = places(table, at, gap)
 
     def key(p: Point, who: Point) -> tuple[int, float]:
         return (sum(math.dist(p, o) < KEEP for o in others if o != partner), math.dist(p, who))
     if partner is None:
         return min(sides, key=lambda p: key(p, me))
-    taken = [p for p in sides if math.dist(p, partner) < KEEP]
-    if taken:
-        return sides[1] if taken[0] == sides[0] else sides[0]
-    leader = me if leads else partner
-    first = min(sides, key=lambda p: key(p, leader))
+    first = math.dist(me, sides[0]) + math.dist(partner, sides[1])
+    second = math.dist(me, sides[1]) + math.dist(partner, sides[0])
+    if abs(first - second) > 1e-6:
+        return sides[0] if first < second else sides[1]
+    theirs = min(sides, key=lambda p: key(p, me if leads else partner))
     if leads:
-        return first
-    return sides[1] if first == sides[0] else sides[0]
+        return theirs
+    return sides[1] if theirs == sides[0] else sides[0]
 
 
 def _node(p: Point, scene: Scene) -> tuple[int, int]:

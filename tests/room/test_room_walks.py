@@ -43,11 +43,24 @@ def test_the_place_taken_is_the_free_side_then_the_nearer() -> None:
 
 def test_a_pair_walking_to_its_table_takes_one_side_each() -> None:
     leader, assistant = (-3.0, 2.0), (-2.5, 2.5)  # both nearer the north side, neither at it
-    north = place_for(TABLE, (0.0, 0.0), leader, [assistant], partner=assistant, leads=True)
-    south = place_for(TABLE, (0.0, 0.0), assistant, [leader], partner=leader, leads=False)
-    assert {north, south} == {(0.0, 1.2), (0.0, -1.2)} and north == (0.0, 1.2)
-    # a partner standing at a side keeps it, whoever leads
-    assert place_for(TABLE, (0.0, 0.0), (0.0, 3.0), [(0.1, 1.1)], partner=(0.1, 1.1), leads=True) == (0.0, -1.2)
+    mine = place_for(TABLE, (0.0, 0.0), leader, [assistant], partner=assistant, leads=True)
+    theirs = place_for(TABLE, (0.0, 0.0), assistant, [leader], partner=leader, leads=False)
+    assert {mine, theirs} == {(0.0, 1.2), (0.0, -1.2)}
+    # both near one side (development room crowded-902): the nearer keeps it, the other goes round
+    leader, assistant = (-0.4, 1.3), (0.5, 1.4)
+    assert place_for(TABLE, (0.0, 0.0), leader, [assistant], partner=assistant, leads=True) == (0.0, 1.2)
+    assert place_for(TABLE, (0.0, 0.0), assistant, [leader], partner=leader, leads=False) == (0.0, -1.2)
+    # exactly as near either way: the leader's rule decides, the assistant takes the other side
+    assert place_for(TABLE, (0.0, 0.0), (-3.0, 0.0), [], partner=(3.0, 0.0), leads=True) == (0.0, 1.2)
+    assert place_for(TABLE, (0.0, 0.0), (3.0, 0.0), [], partner=(-3.0, 0.0), leads=False) == (0.0, -1.2)
+
+
+@given(points, points, points)
+def test_the_two_of_a_pair_never_take_the_same_side(leader: tuple[float, float], assistant: tuple[float, float],
+                                                    at: tuple[float, float]) -> None:
+    mine = place_for(TABLE, at, leader, [assistant], partner=assistant, leads=True)
+    theirs = place_for(TABLE, at, assistant, [leader], partner=leader, leads=False)
+    assert mine != theirs
 
 
 def test_a_way_goes_round_a_table_in_between() -> None:
