@@ -1,5 +1,6 @@
-"""Primitives of the room-clearing team (machines/clear_room*.yaml): the plan of pairs, a robot's job
-in it, the team's news (robots lost, tables done, dropped tables seen) and where a dropped table is.
+"""Primitives of the room-clearing team (machines/clear_room*.yaml): the plan of pairs, the team's news
+(robots lost, tables done, dropped tables seen) and where a dropped table is. A robot's job in the
+plan is machines/room_assign.yaml's (over `teamwork.recovery`).
 
 Pure of any world: they hear, say and compute with `hfsm_behaviours.room`, so they run in world `none`.
 """
@@ -11,8 +12,8 @@ from typing import Any
 
 from hfsm.primitive import Context, Outcome, primitive
 from hfsm.runtime.program import span_ticks
-from hfsm_behaviours.room.frames import ahead, at_wall, relocalise, to_local, to_room
-from hfsm_behaviours.room.plan import drawn, job_of, make_room_plan
+from hfsm_behaviours.room.frames import ahead, at_wall, relocalise, to_room
+from hfsm_behaviours.room.plan import make_room_plan
 from hfsm_behaviours.teamwork.plans import coefficients_from
 
 
@@ -24,30 +25,6 @@ def room_allocate(ctx: Context, *, mine: dict[str, Any], heard: dict[str, Any], 
     states = {**heard, ctx.agent: mine}
     plan = make_room_plan(states, tasks, room, coefficients_from(coefficients), reach)
     return Outcome("allocated", plan=plan)
-
-
-@primitive(outcomes=["assigned", "excluded"], outputs=["job", "drawn"])
-def room_assign(ctx: Context, *, plan: dict[str, Any], lost: list[Any], done: list[Any], seen: dict[str, Any],
-                start: dict[str, Any], spent: list[Any] | None = None,
-                sliding: list[Any] | None = None, where: dict[str, Any] | None = None) -> Outcome:
-    """This robot's job after the robots `lost` and the tables `done`, a dropped table where a
-    survivor `seen` it, on a channel no `spent` pairing used, no helper lent to a table a survivor
-    is `sliding` alone; `table` and `toward` in its own start frame (from `start`, where it was told
-    it was placed); `turn`: the tables not yet done that its table waits for (their ways meet,
-    `claims.turns`). `excluded` when a teammate took this robot for lost. `drawn`: what the monitor
-    draws of this robot's belief (`plan.drawn`: claimed corridors, its table, teammates `where` they
-    last said they stood)."""
-    where = {str(t): [float(v["x"]), float(v["y"])] for t, v in seen.items()}
-    job = job_of(plan, ctx.agent, [str(r) for r in lost], [str(t) for t in done], where,
-                 [str(c) for c in spent or []], [str(e) for e in sliding or []])
-    if job is None:
-        return Outcome("excluded", job={}, drawn={})
-    after = plan["tables"][job["table"]].get("after", []) if job["table"] else []
-    local = {"table_local": to_local(start, job["at"]) if job["at"] else [],
-             "toward_local": to_local(start, job["toward"]) if job["toward"] else [],
-             "turn": [t for t in after if t not in {str(d) for d in done}]}
-    shown = drawn(plan, job, [str(t) for t in done], where or {})
-    return Outcome("assigned", job={**job, **local}, drawn=shown)
 
 
 @primitive(outcomes=["located"], outputs=["seen"])
