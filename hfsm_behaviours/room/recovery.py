@@ -1,9 +1,8 @@
 """The room's recovery decisions: who replaces whom, who is lent, when a pairing is spent, each a pure
-step that machines/room_assign.yaml calls in turn (`job_of` composes the same steps). What a robot
-does is a pure function of the plan and of what the team learns over the radio, each a set that
-only grows: the robots lost, the tables done (at a wall), where survivors saw dropped tables, the pairings spent and the slides (a survivor
-sliding its table to the wall alone, its partner failed). Robots that heard the same, in any order,
-agree.
+step that machines/room_assign.yaml calls in turn (`job_of` composes the same steps). What a robot does is a pure function of the plan and of what the team learns over the radio, each
+a set that only grows: the robots lost, the tables done (at a wall), where survivors saw dropped
+tables, the pairings spent and the slides (a survivor sliding its table to the wall alone, its
+partner failed). Robots that heard the same, in any order, agree.
 
     job = {"role": "leader" | "assistant" | "spare" | "idle" | "stuck", "table": "table1" | "",
            "partner": "r2" | "", "channel": "table1_r1_r2_" | "", "at": [x, y], "toward": [x, y],
@@ -149,7 +148,8 @@ def place_of(me: str, groups: Sequence[Mapping[str, Any]], done: Sequence[str]) 
 
 
 def job_in(plan: Plan, me: str, place: Mapping[str, Any], channel: str, lost: Sequence[str],
-           done: Sequence[str], seen: Mapping[str, Sequence[float]], stuck: Mapping[str, str]) -> dict[str, Any]:
+           done: Sequence[str], seen: Mapping[str, Sequence[float]], stuck: Mapping[str, str]
+           ) -> dict[str, Any]:
     """The job as the machines carry it, from this robot's place and its pairing's channel."""
     alive = sorted(r for r in plan["robots"] if r not in set(lost))
     job: dict[str, Any] = {"role": place["role"], "table": place["table"], "partner": "", "channel": "",
