@@ -1,5 +1,7 @@
 """The room's recovery decisions: who replaces whom, who is lent, when a pairing is spent, each a pure
-step that machines/room_assign.yaml calls in turn (`job_of` composes the same steps). What a robot does is a pure function of the plan and of what the team learns over the radio, each
+step that machines/room_assign.yaml calls in turn (`job_of` composes the same steps).
+
+What a robot does is a pure function of the plan and of what the team learns over the radio, each
 a set that only grows: the robots lost, the tables done (at a wall), where survivors saw dropped
 tables, the pairings spent and the slides (a survivor sliding its table to the wall alone, its
 partner failed). Robots that heard the same, in any order, agree.
