@@ -4,11 +4,11 @@ what `room.recovery.job_of` decides, for any news the team may hear."""
 from __future__ import annotations
 
 from functools import cache
+from pathlib import Path
 from typing import Any
 
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from tests.room.test_room_plan import NEWS, ROOM, SIX, TASKS
 
 from hfsm.load import load
 from hfsm.registry import Registry
@@ -18,6 +18,7 @@ from hfsm.world import NullWorld
 from hfsm_behaviours.room.frames import to_local
 from hfsm_behaviours.room.plan import make_room_plan
 from hfsm_behaviours.room.recovery import job_of
+from tests.room.test_room_plan import NEWS, ROOM, SIX, TASKS
 
 MACHINE = "room_assign"
 START = {"x": 0.5, "y": -0.5, "yaw": 30.0}
@@ -25,8 +26,6 @@ START = {"x": 0.5, "y": -0.5, "yaw": 30.0}
 
 @cache
 def program() -> tuple[Program, Any]:
-    from pathlib import Path
-
     registry = Registry.discover()
     loaded = load([Path(__file__).resolve().parents[2] / "machines" / f"{MACHINE}.yaml"], registry=registry)
     return Program(loaded.machines, registry, 0.05), loaded.roots[0]

@@ -21,6 +21,8 @@ PAPER = [
     ("synchronised_lift_table", [*PAIR, *ROLES, "--param", "patience=5", "--loss", "1"]),
     ("step_together", [*PAIR, "--param", "direction=left", "--param", "cycle=1", "--param", "steps=1",
                        "--param", "split=1", "--param", "limit=3", "--values", "HOLDING"]),
+    ("tararc_exchange", [*PAIR, "--param", "message=s", "--param", "team=[r1,r2]", "--param", "limit=0.2",
+                         "--loss", "1"]),
 ]  # fmt: skip
 
 
