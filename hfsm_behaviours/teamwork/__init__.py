@@ -20,7 +20,14 @@ from hfsm_behaviours.teamwork.recovery import (
     room_slides,
     room_stranded,
 )
-from hfsm_behaviours.teamwork.room import room_allocate, room_locate, room_relocalise, room_watch
+from hfsm_behaviours.teamwork.room import (
+    room_allocate,
+    room_hear,
+    room_locate,
+    room_news,
+    room_relocalise,
+    room_settle,
+)
 from hfsm_behaviours.teamwork.walk import room_give_way, room_route
 
 PRIMITIVES: tuple[Primitive, ...] = (
@@ -43,7 +50,9 @@ PRIMITIVES: tuple[Primitive, ...] = (
     room_job,
     room_locate,
     room_relocalise,
-    room_watch,
+    room_news,
+    room_hear,
+    room_settle,
     room_route,
     room_give_way,
 )
