@@ -8,8 +8,9 @@ What counts as a line: a line of code, neither blank, nor a comment, nor inside 
 
 - Python, the team's code: every module of `hfsm_behaviours/teamwork/`, `hfsm_behaviours/tararc/`
   and `hfsm_behaviours/room/`; among them, the protocols: the modules of primitives that hear, say
-  and decide for the team (`teamwork/` but `walk.py`, the room's walks) and the room's recovery
-  decisions (`room/plan.py`, `room/recovery.py`); and the functions and classes issue 21 names
+  and decide for the team (`teamwork/` but `walk.py`, the room's walks), the room's plan and
+  recovery decisions (`room/plan.py`, `room/recovery.py`) and the pure data of the exchange and the
+  news (`tararc/holdings.py`, `room/news.py`); and the functions and classes issue 21 names
   (`NAMED`, wherever they stand in those folders, their docstrings left out).
 - YAML, the team's machines: `machines/tararc*.yaml`, `machines/room_*.yaml`,
   `machines/clear_room.yaml`.
@@ -29,10 +30,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 PYTHON_FOLDERS = ("hfsm_behaviours/teamwork", "hfsm_behaviours/tararc", "hfsm_behaviours/room")
-PROTOCOLS = ("hfsm_behaviours/teamwork/exchange.py", "hfsm_behaviours/teamwork/radio.py",
-             "hfsm_behaviours/teamwork/room.py", "hfsm_behaviours/teamwork/plans.py",
-             "hfsm_behaviours/teamwork/memory.py", "hfsm_behaviours/room/plan.py",
-             "hfsm_behaviours/room/recovery.py")
+PROTOCOLS = ("hfsm_behaviours/teamwork/[!_w]*.py", "hfsm_behaviours/room/plan.py",
+             "hfsm_behaviours/room/recovery.py", "hfsm_behaviours/room/news.py", "hfsm_behaviours/tararc/holdings.py")
 NAMED = ("Holdings", "tararc_exchange", "job_of", "_job_in", "groups_after", "sliding_partners", "channel_of",
          "room_watch")
 MACHINES = ("machines/tararc*.yaml", "machines/room_*.yaml", "machines/clear_room.yaml")
@@ -88,17 +87,18 @@ def named_lines(path: Path) -> dict[str, int]:
     return out
 
 
-def files(patterns: tuple[str, ...]) -> list[Path]:
-    return sorted({p for pattern in patterns for p in ROOT.glob(pattern)})
+def files(root: Path, patterns: tuple[str, ...]) -> list[Path]:
+    return sorted({p for pattern in patterns for p in root.glob(pattern)})
 
 
-def count() -> dict[str, object]:
-    python = {str(p.relative_to(ROOT)): python_lines(p.read_text(encoding="utf-8"))
-              for folder in PYTHON_FOLDERS for p in sorted((ROOT / folder).glob("*.py"))}
-    protocols = {str(p.relative_to(ROOT)): python[str(p.relative_to(ROOT))] for p in files(PROTOCOLS)}
-    named = {f"{p.relative_to(ROOT)}:{name}": n for folder in PYTHON_FOLDERS
-             for p in sorted((ROOT / folder).glob("*.py")) for name, n in named_lines(p).items()}
-    machines = {str(p.relative_to(ROOT)): yaml_lines(p.read_text(encoding="utf-8")) for p in files(MACHINES)}
+def count(root: Path = ROOT) -> dict[str, object]:
+    python = {str(p.relative_to(root)): python_lines(p.read_text(encoding="utf-8"))
+              for folder in PYTHON_FOLDERS for p in sorted((root / folder).glob("*.py"))}
+    protocols = {str(p.relative_to(root)): python[str(p.relative_to(root))] for p in files(root, PROTOCOLS)}
+    named = {f"{p.relative_to(root)}:{name}": n for folder in PYTHON_FOLDERS
+             for p in sorted((root / folder).glob("*.py")) for name, n in named_lines(p).items()}
+    machines = {str(p.relative_to(root)): yaml_lines(p.read_text(encoding="utf-8"))
+                for p in files(root, MACHINES)}
     return {"python": sum(python.values()), "python_protocols": sum(protocols.values()),
             "python_named": sum(named.values()),
             "yaml": sum(machines.values()), "python_files": python, "protocol_files": protocols,
@@ -108,8 +108,9 @@ def count() -> dict[str, object]:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0] if __doc__ else None)
     parser.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    parser.add_argument("--root", type=Path, default=ROOT, help="the checkout to count (default: this one)")
     args = parser.parse_args(argv)
-    counts = count()
+    counts = count(args.root.resolve())
     if args.json:
         print(json.dumps(counts, indent=1))
         return 0
@@ -119,7 +120,7 @@ def main(argv: list[str] | None = None) -> int:
         for name, n in dict(counts[key]).items():  # type: ignore[call-overload]
             print(f"  {n:5d}  {name}")
     print(f"Python, teamwork/ tararc/ room/: {counts['python']} lines of code")
-    print("  of which protocols (teamwork/ but walk.py, room/plan.py, room/recovery.py):",
+    print("  of which protocols (teamwork/ but walk.py; room/plan, recovery, news; tararc/holdings):",
           counts["python_protocols"])
     print(f"  of which the functions issue 21 names: {counts['python_named']}")
     print(f"YAML, the team's machines: {counts['yaml']} lines")
