@@ -31,7 +31,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 PYTHON_FOLDERS = ("hfsm_behaviours/teamwork", "hfsm_behaviours/tararc", "hfsm_behaviours/room")
 PROTOCOLS = ("hfsm_behaviours/teamwork/[!_w]*.py", "hfsm_behaviours/room/plan.py",
-             "hfsm_behaviours/room/recovery.py", "hfsm_behaviours/room/news.py", "hfsm_behaviours/tararc/holdings.py")
+             "hfsm_behaviours/room/recovery.py", "hfsm_behaviours/room/news.py",
+             "hfsm_behaviours/tararc/holdings.py")
 NAMED = ("Holdings", "tararc_exchange", "job_of", "_job_in", "groups_after", "sliding_partners", "channel_of",
          "room_watch")
 MACHINES = ("machines/tararc*.yaml", "machines/room_*.yaml", "machines/clear_room.yaml")
