@@ -28,7 +28,12 @@ def news_of(me: str, team: list[Any], known: Mapping[str, Any], where: Mapping[s
 
 
 def _newer(a: Mapping[str, Any], b: Mapping[str, Any]) -> bool:
-    return (float(a["t"]), str(a["by"])) > (float(b["t"]), str(b["by"]))
+    """The later sighting, then by robot, then by place: a total order, so news merge in any order."""
+    return _order(a) > _order(b)
+
+
+def _order(sight: Mapping[str, Any]) -> tuple[float, str, float, float]:
+    return float(sight["t"]), str(sight["by"]), float(sight.get("x", 0.0)), float(sight.get("y", 0.0))
 
 
 def hear(news: Mapping[str, Any], sender: str, data: Any, pose: Any, start: Any, tick: int) -> dict[str, Any]:

@@ -102,7 +102,7 @@ def room_give_way(ctx: Context, *, walk: list[Any], standing: dict[str, Any] | N
     def free() -> bool:
         nonlocal next_say
         if ctx.time >= next_say:
-            ctx.send(WALK, keep="last", round=0, data={"walk": walk, "since": since, "crowd": many})  # a walker's latest
+            ctx.send(WALK, keep="last", round=0, data={"walk": walk, "since": since, "crowd": many})
             next_say = ctx.time + every
         while (m := ctx.receive(WALK)) is not None:
             data = m.data.get("data", {})
