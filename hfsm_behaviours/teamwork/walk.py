@@ -39,7 +39,7 @@ def _scene(tables: dict[str, Any], done: list[Any], seen: dict[str, Any], robots
     return Scene(width, depth, tuple(tops), tuple(lanes), tuple(robots))
 
 
-@primitive(outcomes=["walk", "here"], outputs=["path", "walk", "face", "length"])
+@primitive(outcomes=["walk", "here"], outputs=["path", "walk", "face", "length", "tops"])
 def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose: dict[str, Any],
                tables: dict[str, Any], room: dict[str, Any], done: list[Any] | None = None,
                seen: dict[str, Any] | None = None, where: dict[str, Any] | None = None,
@@ -49,7 +49,9 @@ def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
     [x, y]}, room frame; else where they started, `starts`: {robot: {x, y}}); `here` when the robot
     is within `near` m of that place. `path`: the waypoints in its own start frame; `walk`: where it
     stands then the waypoints, in the room's frame (what it says to the other walkers); `face`: the
-    table, in its own start frame; `length`: the way's metres (0 when here)."""
+    table, in its own start frame; `length`: the way's metres (0 when here); `tops`: the tables'
+    tops where the team believes they stand, [x, y, yaw radians, length, width] in its own start
+    frame (go_along keeps off them: they stand below its range finder's beams)."""
     me_local = [float(pose["x"]), float(pose["y"])]
     x, y = to_room(start, me_local)
     me = (x, y)
@@ -61,15 +63,19 @@ def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
     others = [p for r, p in sorted(said.items()) if r != ctx.agent]
     goal = place_for(table, at, me, others)
     if math.dist(me, goal) <= near:
-        return Outcome("here", path=[], walk=[], face=to_local(start, at), length=0.0)
+        return Outcome("here", path=[], walk=[], face=to_local(start, at), length=0.0, tops=[])
     # the table walked to is not in the way of its own place
     rest = {k: v for k, v in tables.items() if k != str(job["table"])}
     scene = _scene(rest, done or [], seen or {}, others, room)
     scene = replace(scene, tables=(*scene.tables, footprint(table, 0.0, at)))
     points = plan_walk(scene, me, goal) or [goal]
     length = sum(math.dist(a, b) for a, b in zip([me, *points], points, strict=False))
+    turned = math.radians(float(start["yaw"]))
+    tops = [[*to_local(start, (r.cx, r.cy)), round(math.atan2(r.uy, r.ux) - turned, 6),
+             round(2 * r.half_length, 4), round(2 * r.half_width, 4)] for r in scene.tables]
     return Outcome("walk", path=[to_local(start, p) for p in points], face=to_local(start, at),
-                   walk=[[round(p[0], 4), round(p[1], 4)] for p in [me, *points]], length=round(length, 3))
+                   walk=[[round(p[0], 4), round(p[1], 4)] for p in [me, *points]], length=round(length, 3),
+                   tops=tops)
 
 
 @primitive(outcomes=["clear", "timeout"], outputs=["since"])

@@ -6,9 +6,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from hfsm_behaviours.drive.avoid import tops_near
 from hfsm_behaviours.drive.guard import LANE, SLOW, STOP, TURN_STOP, Guarded, let_through
 
 WALK = (0.1, 0.0, 0.0)
@@ -123,3 +125,16 @@ def test_a_stopped_body_is_not_judged() -> None:
     guarded.stop()
     guarded.update(0.0, 0.05)
     assert guarded.passed == 1.0 and guarded.held == 0.0
+
+
+def test_a_table_top_below_the_beams_is_kept_off_as_a_thing() -> None:
+    """go_along's `tops`: the nearest point of a table the team believes stands there, relative to
+    the robot; none beyond `look`; a belief that puts the robot inside the top gives its nearest edge."""
+    top = [1.0, 0.0, 0.0, 0.8, 0.5]  # x 0.6-1.4, y -0.25-0.25
+    assert tops_near((0.0, 0.0, 0.0), [top], 1.2) == [(0.6, 0.0)]
+    assert tops_near((1.0, 1.0, 0.0), [top], 1.2) == [(0.0, -0.75)]
+    assert tops_near((0.0, 3.0, 0.0), [top], 1.2) == []
+    inside = tops_near((1.3, 0.0, 0.0), [top], 1.2)
+    assert len(inside) == 1 and inside[0] == pytest.approx((0.1, 0.0))
+    turned = tops_near((1.0, 1.0, 0.0), [[1.0, 0.0, math.pi / 2, 0.8, 0.5]], 1.2)
+    assert turned[0] == pytest.approx((0.0, -0.6))
