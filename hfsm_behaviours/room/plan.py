@@ -197,6 +197,17 @@ def job_of(plan: Plan, me: str, lost: Sequence[str], done: Sequence[str],
     return {**mine, "role": "stuck", **left} if left else mine
 
 
+def unmanned(plan: Plan, lost: Sequence[str], done: Sequence[str], spent: Sequence[str] = (),
+             sliding: Sequence[str] = ()) -> list[str]:
+    """The tables not yet done that no pair is left for (their group short, no slide on them): no
+    other table's turn waits for one (it would wait until the room's limit); robots freed when the
+    others are done come for it."""
+    slid = sliding_partners(lost, done, spent, sliding)
+    finished = set(done)
+    return sorted(str(g["task"]["id"]) for g in groups_after(plan, sorted(set(lost) - slid), done)
+                  if g["task"]["id"] not in finished and len(g["members"]) < PAIR)
+
+
 def _job_in(plan: Plan, me: str, groups: list[dict[str, Any]], done: Sequence[str],
             seen: Mapping[str, Sequence[float]], spent: Sequence[str], job: dict[str, Any]) -> dict[str, Any]:
     for index, g in enumerate(groups):

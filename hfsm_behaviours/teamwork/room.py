@@ -12,7 +12,7 @@ from typing import Any
 from hfsm.primitive import Context, Outcome, primitive
 from hfsm.runtime.program import span_ticks
 from hfsm_behaviours.room.frames import ahead, at_wall, relocalise, to_local, to_room
-from hfsm_behaviours.room.plan import drawn, job_of, make_room_plan
+from hfsm_behaviours.room.plan import drawn, job_of, make_room_plan, unmanned
 from hfsm_behaviours.teamwork.plans import coefficients_from
 
 
@@ -34,18 +34,21 @@ def room_assign(ctx: Context, *, plan: dict[str, Any], lost: list[Any], done: li
     survivor `seen` it, on a channel no `spent` pairing used, no helper lent to a table a survivor
     is `sliding` alone; `table` and `toward` in its own start frame (from `start`, where it was told
     it was placed); `turn`: the tables not yet done that its table waits for (their ways meet,
-    `claims.turns`). `excluded` when a teammate took this robot for lost. `drawn`: what the monitor
+    `claims.turns`), but for a table no pair is left for (`unmanned`: it would be waited for until the
+    room's limit). `excluded` when a teammate took this robot for lost. `drawn`: what the monitor
     draws of this robot's belief (`plan.drawn`: claimed corridors, its table, teammates `where` they
     last said they stood)."""
     where = {str(t): [float(v["x"]), float(v["y"])] for t, v in seen.items()}
-    job = job_of(plan, ctx.agent, [str(r) for r in lost], [str(t) for t in done], where,
-                 [str(c) for c in spent or []], [str(e) for e in sliding or []])
+    news = ([str(r) for r in lost], [str(t) for t in done], [str(c) for c in spent or []],
+            [str(e) for e in sliding or []])
+    job = job_of(plan, ctx.agent, news[0], news[1], where, news[2], news[3])
     if job is None:
         return Outcome("excluded", job={}, drawn={})
     after = plan["tables"][job["table"]].get("after", []) if job["table"] else []
+    skip = set(news[1]) | set(unmanned(plan, *news))
     local = {"table_local": to_local(start, job["at"]) if job["at"] else [],
              "toward_local": to_local(start, job["toward"]) if job["toward"] else [],
-             "turn": [t for t in after if t not in {str(d) for d in done}]}
+             "turn": [t for t in after if t not in skip]}
     shown = drawn(plan, job, [str(t) for t in done], where or {})
     return Outcome("assigned", job={**job, **local}, drawn=shown)
 
