@@ -37,7 +37,8 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--table", type=Path, help="print the classification of a census file and stop")
     args = p.parse_args(argv)
     if args.table:
-        print_table([json.loads(line) for line in args.table.read_text(encoding="utf-8").splitlines() if line])
+        lines = args.table.read_text(encoding="utf-8").splitlines()
+        print_table([json.loads(line) for line in lines if line])
         return 0
     jobs = [(s, seed, args.max_time) for seed in seeds_of(args.seeds) for s in args.strata.split(",") if s]
     args.out.parent.mkdir(parents=True, exist_ok=True)
