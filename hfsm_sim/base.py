@@ -4,6 +4,7 @@ odometry, a battery, bumps and failing. `hfsm_sim.robot.Robot` (the humanoid) an
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -24,6 +25,14 @@ Pose = tuple[float, float, float]
 
 def clamp(value: float, low: float, high: float) -> float:
     return max(low, min(high, value))
+
+
+@functools.cache
+def _turns(beams: int) -> np.ndarray:
+    """Beam k's angle from straight ahead, k/beams of a turn (kept: a scan's beams are always the same)."""
+    turns = np.arange(beams) * (2 * math.pi / beams)
+    turns.flags.writeable = False
+    return turns
 
 
 @dataclass(frozen=True)
@@ -114,17 +123,18 @@ class Base:
             return []
         x, y, yaw = self._true_pose()
         inner = scanner.inner
-        angles = yaw + np.arange(beams) * (2 * math.pi / beams)
+        angles = yaw + _turns(beams)
         c, s = np.cos(angles), np.sin(angles)
         height = np.full(beams, scanner.height)
         starts = np.stack([x + c * inner, y + s * inner, height], axis=1).tolist()
         ends = np.stack([x + c * reach, y + s * reach, height], axis=1).tolist()
-        hits = p.rayTestBatch(starts, ends, numThreads=1, physicsClientId=self._cid)
-        body = np.fromiter((h[0] for h in hits), dtype=int, count=beams)
-        fraction = np.fromiter((h[2] for h in hits), dtype=float, count=beams)
+        ids, _, fractions, *_ = zip(*p.rayTestBatch(starts, ends, numThreads=1, physicsClientId=self._cid),
+                                    strict=True)
+        body, fraction = np.array(ids, dtype=int), np.array(fractions, dtype=float)
         noise = scanner.rng.normal(0.0, SCAN_NOISE, beams)
         ranges = np.minimum(reach, inner + fraction * (reach - inner) + noise).round(4)
-        return [float(r) for r in np.where(body < 0, reach, ranges)]
+        scan: list[float] = np.where(body < 0, reach, ranges).tolist()
+        return scan
 
     # called by World
     def _true_pose(self) -> Pose:
@@ -150,11 +160,28 @@ class Base:
         """Called once at the start of each `World.advance` (the humanoid keeps its leash every step)."""
 
     def _pre_step(self, dt: float) -> None:
+        """`_ahead`, `_leashed` and `_push_target` in one, the same arithmetic: called for every
+        walking body after every physics step."""
         forward, sideways, turn = self._cmd
         if forward == 0.0 and sideways == 0.0 and turn == 0.0:
             return
-        self._target = self._leashed(self._ahead(dt), dt)
-        self._push_target()
+        x, y, yaw = self._target
+        c, s = math.cos(yaw), math.sin(yaw)
+        x, y = x + (c * forward - s * sideways) * dt, y + (s * forward + c * sideways) * dt
+        yaw += turn * dt
+        chassis, cid = self._chassis, self._cid
+        pos, orn = p.getBasePositionAndOrientation(chassis.body, physicsClientId=cid)
+        ax, ay, ayaw = pos[0], pos[1], yaw_of(orn)
+        dx, dy = x - ax, y - ay
+        dist = math.hypot(dx, dy)
+        leash = max(LEASH_XY, 8.0 * math.hypot(forward, sideways) * dt)
+        if dist > leash:
+            x, y = ax + dx * leash / dist, ay + dy * leash / dist
+        yaw = ayaw + clamp(wrap(yaw - ayaw), -LEASH_YAW, LEASH_YAW)
+        self._target = (x, y, yaw)
+        orn = (0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2))
+        p.changeConstraint(chassis.mocap, jointChildPivot=[x, y, chassis.hover],
+                           jointChildFrameOrientation=orn, maxForce=chassis.max_force, physicsClientId=cid)
 
     def _ahead(self, dt: float) -> Pose:
         """The target moved on by the commanded velocity for `dt`."""

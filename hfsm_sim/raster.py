@@ -20,6 +20,7 @@ which moved every edge by half a pixel (1-2 % of the pixels of an image).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -123,17 +124,23 @@ def scene_parts(cid: int) -> list[_Part]:
             for (body, link), (q, n, c) in groups.items()]
 
 
+Placed = tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]  # faces' corners, normals, colours, bodies
+
+
 class Rasteriser:
     """Draws camera views of one pybullet client's boxes; reads the scene again when a body is
-    added or removed."""
+    added or removed. `clock` (the world's physics step count): the faces placed in the world are
+    kept for every image drawn until it moves on (the robots of a room look in the same tick)."""
 
-    def __init__(self, cid: int, light: Light = ROOM_LIGHT) -> None:
+    def __init__(self, cid: int, light: Light = ROOM_LIGHT, clock: Callable[[], int] | None = None) -> None:
         self._cid = cid
         direction = np.asarray(light.direction, float)
         self._light = direction / np.linalg.norm(direction)
         self._ambient, self._diffuse = np.float32(light.ambient), np.float32(light.diffuse)
         self._bodies = -1
         self._parts: list[_Part] = []
+        self._clock = clock
+        self._placed: tuple[int, Placed] | None = None
 
     def _scene(self) -> list[_Part]:
         bodies = p.getNumBodies(physicsClientId=self._cid)
@@ -141,9 +148,17 @@ class Rasteriser:
             self._parts, self._bodies = scene_parts(self._cid), bodies
         return self._parts
 
-    def _faces(self, camera: Camera) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """Every face seen from the front: corners in the camera frame (F x 4 x 3), normals in the
-        camera frame (F x 3), colours (F x 3 uint8) and body ids (F)."""
+    def _world(self) -> Placed:
+        """Every face in the world frame now: corners (F x 4 x 3), normals (F x 3), base colours and
+        body ids; placed once a physics step when there is a clock."""
+        if self._clock is None:
+            return self._place()
+        now, placed = self._clock(), self._placed
+        if placed is None or placed[0] != now or self._bodies != p.getNumBodies(physicsClientId=self._cid):
+            placed = self._placed = (now, self._place())
+        return placed[1]
+
+    def _place(self) -> Placed:
         quads, normals, colours, bodies = [], [], [], []
         for part in self._scene():
             if part.link < 0:
@@ -155,12 +170,15 @@ class Rasteriser:
             normals.append(part.normals @ rot.T)
             colours.append(part.base_colours)
             bodies.append(np.full(len(part.quads), part.body))
-        world = np.concatenate(quads)  # faces x 4 x 3
-        normal = np.concatenate(normals)  # faces x 3
+        return np.concatenate(quads), np.concatenate(normals), np.concatenate(colours), np.concatenate(bodies)
+
+    def _faces(self, camera: Camera) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Every face seen from the front: corners in the camera frame (F x 4 x 3), normals in the
+        camera frame (F x 3), colours (F x 3 uint8) and body ids (F)."""
+        world, normal, colours, bodies = self._world()
         front = np.einsum("fk,fk->f", world[:, 0] - camera.eye, normal) < 0.0
-        lit = self._shade(normal[front], np.concatenate(colours)[front])
-        return ((world[front] - camera.eye) @ camera.axes, normal[front] @ camera.axes, lit,
-                np.concatenate(bodies)[front])
+        lit = self._shade(normal[front], colours[front])
+        return ((world[front] - camera.eye) @ camera.axes, normal[front] @ camera.axes, lit, bodies[front])
 
     def _shade(self, normals: np.ndarray, base: np.ndarray) -> np.ndarray:
         """The tiny renderer's colour of each face: int(ambient * c + diffuse * max(0, n.l) * c)."""

@@ -37,12 +37,11 @@ class Scorer:
         """Call after every physics step: one query of all the world's contacts (each pair once)."""
         now: set[tuple[str, str, str]] = set()
         ids, kinds, bumps = self._ids, self._kinds, self.bumps
-        for contact in p.getContactPoints(physicsClientId=self._cid):
-            if contact[8] > TOUCH:
-                continue
-            a, b = contact[1], contact[2]
-            if a not in ids and b not in ids:
-                continue  # a table on the floor: most contacts, and none a robot's
+        # most contacts are no robot's (a table's legs on the floor) or not touching (a body's base
+        # hovering over the floor): passed over in one comprehension
+        touching = [(c[1], c[2]) for c in p.getContactPoints(physicsClientId=self._cid)
+                    if not c[8] > TOUCH and (c[1] in ids or c[2] in ids)]
+        for a, b in touching:
             for me, other in ((a, b), (b, a)):
                 name = ids.get(me)
                 if name is None:
@@ -53,9 +52,9 @@ class Scorer:
                     partner = ids.get(other, "")
                     now.add((kind, min(name, partner), max(name, partner)) if partner
                             else (kind, name, ""))
-        touching = self._touching
-        if now != touching:
-            for key in now - touching:
+        before = self._touching
+        if now != before:
+            for key in now - before:
                 self.episodes[key[0]] += 1
             self._touching = now
 

@@ -37,6 +37,7 @@ class World:
         self.scenario, self.seed, self.physics_hz = scenario, seed, physics_hz
         self.image_size = image_size
         self._cid: int | None = p.connect(p.DIRECT)
+        self._steps = 0
         try:  # a failed set-up must not leave the client connected
             cid = self._cid
             p.setGravity(0.0, 0.0, -9.81, physicsClientId=cid)
@@ -49,7 +50,7 @@ class World:
             self._liftings = [Lifting(cid, table, bodies.full, dt=1.0 / physics_hz,
                                       hand_points=self._hand_points) for table in tables]
             # one renderer for every robot's cameras; "tiny" (pybullet's) only to compare with
-            cameras = TinyRenderer(cid) if renderer == "tiny" else Rasteriser(cid)
+            cameras = TinyRenderer(cid) if renderer == "tiny" else Rasteriser(cid, clock=lambda: self._steps)
             self.robots: dict[str, AnyRobot] = make_robots(cid, scenario, seed, bodies, self._liftings,
                                                            image_size, motion, cameras)
             arms = {name: r for name, r in self.robots.items() if isinstance(r, Robot)}
@@ -59,7 +60,6 @@ class World:
             self.radio = Radio(radio_latency, radio_loss or scenario.radio.loss, seed)
             self.truth = Truth(cid, scenario.room, room, tables, bodies.full, bodies.ids)
             self._scorer = Scorer(cid, self.truth, success_distance)
-            self._steps = 0
             self._recorder = recorder
             self.labels: dict[str, str] = {}  # shown beside each robot's name in videos (role, behaviour)
             self._next_capture = 0.0
@@ -94,8 +94,9 @@ class World:
         raised = any(r._arms_active() for r in robots if isinstance(r, Robot))  # commands hold over the span
         for robot in robots:
             robot._before_advance(dt)
+        moving = [r for r in robots if r._cmd != (0.0, 0.0, 0.0)]  # a body standing still has no step
         while self._steps < end:
-            for robot in robots:
+            for robot in moving:
                 robot._pre_step(dt)
             p.stepSimulation(physicsClientId=cid)
             self._steps += 1

@@ -10,6 +10,7 @@ from pathlib import Path
 from hfsm.errors import Finding
 from hfsm.library import MachineFile
 from hfsm.model import CallState, ParallelState
+from hfsm.runtime.agent import CALLEE
 from hfsm.yamlio import Path_
 
 _QUOTED = re.compile(r"in '(.+?)'(?::|$)")
@@ -25,8 +26,14 @@ def locate(
     where: Path_ = (),
 ) -> Finding | None:
     """The finding of an error met by `agent` at `time` in the state at path `origin` (`top/s/...`):
-    at the expression that failed when `where` (its path in that state's machine file) is known."""
-    found = _state(machines, top, origin.split("/")[1:])
+    at the expression that failed when `where` is known: its path in that state's machine file, or
+    after CALLEE, in the file of the machine run at `origin` (its own `outputs:` or `timer:`)."""
+    found, runs = _state(machines, top, origin.split("/")[1:])
+    if where[:1] == (CALLEE,):
+        at = _expression(runs, where[1:]) if runs is not None else None
+        if runs is not None and at is not None:
+            return Finding(runs.doc.file, *at, "", f"{agent} at t={time:g} s: {message}")
+        where = ()
     if found is None:
         return None
     machine, path = found
@@ -77,15 +84,16 @@ def _has(value: object, part: str | int) -> bool:
 
 def _state(
     machines: Mapping[str, MachineFile], top: str, names: list[str]
-) -> tuple[MachineFile, Path_] | None:
-    """The machine file and the path of the last state along `names` (states, regions, states...)."""
+) -> tuple[tuple[MachineFile, Path_] | None, MachineFile | None]:
+    """The machine file and the path of the last state along `names` (states, regions, states...),
+    and the machine that state (or, for no names, the run) runs."""
     machine = machines.get(top)
     found: tuple[MachineFile, Path_] | None = None
     i = 0
     while machine is not None and i < len(names):
         state = machine.model.states.get(names[i])
         if state is None:
-            return found
+            return found, None
         found = (machine, ("states", names[i]))
         callee = None
         if isinstance(state, CallState):
@@ -97,7 +105,7 @@ def _state(
         else:
             i += 1
         machine = machines.get(callee) if callee is not None else None
-    return found
+    return found, machine
 
 
 def _find_text(file: str, text: str, line: int, col: int) -> tuple[int, int]:

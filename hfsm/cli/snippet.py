@@ -16,6 +16,8 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TextIO
 
+from wcwidth import wcswidth, wcwidth
+
 from hfsm.errors import Finding, Severity, UserError
 from hfsm.spans import finding_span
 from hfsm.yamlio import decode, read_bytes
@@ -95,7 +97,13 @@ def _window(raw: str, start: int, end: int) -> tuple[str, int, int]:
 
 
 def _width(text: str) -> int:
-    return len(text.replace("\t", TAB))
+    """Terminal columns of `text` as shown: wide characters (中, most emoji) take two, combining marks
+    none, a tab four; a character the terminal cannot print counts one (it is shown as something)."""
+    text = text.replace("\t", TAB)
+    width = wcswidth(text)
+    if width >= 0:
+        return width
+    return sum(1 if each < 0 else each for each in map(wcwidth, text))
 
 
 def _painter(colour: bool) -> Callable[[str, str], str]:

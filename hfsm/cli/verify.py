@@ -36,6 +36,13 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument(
         "--agent-param", action="append", default=[], metavar="AGENT:K=V", help="a param for one agent"
     )
+    p.add_argument(
+        "--scope",
+        action="append",
+        default=[],
+        metavar="NAME:AGENT,AGENT",
+        help="the agents listed run their top machine under scope NAME (as hfsm-test's scopes:)",
+    )
     p.add_argument("--loss", type=_count, default=0, metavar="N", help="messages or notices a run may lose")
     p.add_argument("--delay", type=_count, default=0, metavar="K", help="ticks each may come late")
     p.add_argument("--fail", type=_count, default=0, metavar="N", help="agents that may fail, at any tick")
@@ -105,11 +112,12 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 def _main(args: argparse.Namespace) -> int:
     from hfsm.runtime.run import RunOptions
-    from hfsm.verify.build import bound_of, input_values, read_values, unobserved, verify_program
+    from hfsm.verify.build import bound_of, input_values, unobserved, verify_program
     from hfsm.verify.choices import Chooser
     from hfsm.verify.properties import Properties
     from hfsm.verify.props import read_props
     from hfsm.verify.search import Budget, explore
+    from hfsm.verify.values import read_values
 
     with stdout_to_stderr():
         registry = Registry.discover()
@@ -130,7 +138,8 @@ def _main(args: argparse.Namespace) -> int:
     bound = bound_of(top, args.bound)
     chooser = Chooser()
     program = verify_program(loaded, registry, args.stand_in, values, chooser, args.dt)
-    options = RunOptions(top.name, agents, params, args.seed, bound, agent_params=agent_params)
+    scopes = _scopes(args.scope, agents)
+    options = RunOptions(top.name, agents, params, args.seed, bound, agent_params=agent_params, scopes=scopes)
     budget = Budget(args.loss, args.delay, args.fail, span_ticks(bound, args.dt), args.max_states)
     budget.max_seconds = args.max_seconds or budget.max_seconds
     failures = top.model.failure_outcomes
@@ -157,6 +166,8 @@ def _main(args: argparse.Namespace) -> int:
             "top": top.name, "agents": agents, "params": params, "agent_params": agent_params,
             "seed": args.seed, "dt": args.dt,
             "bound": bound, "stand_ins": args.stand_in, "outputs": values.outputs, "inputs": inputs,
+            **({"scripts": values.scripts} if values.scripts else {}),
+            **({"scopes": {a: [n, list(m)] for a, (n, m) in scopes.items()}} if scopes else {}),
             "loss": args.loss, "delay": args.delay, "fail": args.fail,
             "violation": {"kind": v.kind, "agent": v.agent, "t": round(v.tick * args.dt, 9), "text": v.text},
             "choices": [c.as_json(args.dt) for c in v.choices],
@@ -194,6 +205,23 @@ def _agents(text: str) -> list[str]:
     return agents
 
 
+def _scopes(given: list[str], agents: list[str]) -> dict[str, tuple[str, tuple[str, ...]]]:
+    """`--scope NAME:AGENT,AGENT`: each agent listed runs under that scope (one scope an agent)."""
+    scopes: dict[str, tuple[str, tuple[str, ...]]] = {}
+    for text in given:
+        name, sep, listed = text.partition(":")
+        members = tuple(a.strip() for a in listed.split(",") if a.strip())
+        unknown = [a for a in members if a not in agents]
+        if not sep or not is_name(name) or not members or unknown:
+            hint = did_you_mean(unknown[0], agents) if unknown else None
+            raise UsageError(f"--scope {text!r}: NAME:AGENT,AGENT with agents of the run{hint or ''}")
+        for agent in members:
+            if agent in scopes:
+                raise UsageError(f"--scope {text!r}: {agent} is already in scope '{scopes[agent][0]}'")
+            scopes[agent] = (name, members)
+    return scopes
+
+
 def _agent_params(
     args: argparse.Namespace, agents: list[str], top: MachineFile, registry: Registry
 ) -> dict[str, dict[str, Any]]:
@@ -220,8 +248,9 @@ def _tell(args: argparse.Namespace, out: Path, setup: dict[str, Any]) -> None:
         elif c["kind"] == "fail":
             print(f"  t={c['t']:g} s: {', '.join(c['agents'])} failed", file=sys.stderr)
         else:
+            given = f" with {json.dumps(c['outputs'])}" if "outputs" in c else ""
             print(
-                f"  t={c['t']:g} s: {c['what']} ended '{c['outcome']}' after {c['after']} ticks",
+                f"  t={c['t']:g} s: {c['what']} ended '{c['outcome']}' after {c['after']} ticks{given}",
                 file=sys.stderr,
             )
     if len(choices) > SHOWN:

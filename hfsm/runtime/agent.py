@@ -21,6 +21,8 @@ from hfsm.runtime.scopes import Radio
 from hfsm.runtime.states import RMachine, RRegion, RState
 from hfsm.world import World
 
+CALLEE = "<callee>"  # an Event's `where` that starts so is a path in the file of the machine run at `origin`
+
 
 class Event:
     """What ends a state: a callee's outcome (with outputs), a timeout, a message, an error, a choice."""

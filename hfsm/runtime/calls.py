@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from hfsm.expr import ExprValueError
-from hfsm.runtime.agent import Event, Frame, Region
+from hfsm.runtime.agent import CALLEE, Event, Frame, Region
 from hfsm.runtime.clock import RunClock
 from hfsm.runtime.host import Host
 from hfsm.runtime.ledger import Ledger
@@ -93,7 +93,7 @@ class Calls:
         """A called machine starts: its timer, its initial state; its ending if it ends at once."""
         machine: RMachine = frame.machine
         if machine.timer is not None:
-            ticks = self.timers.ticks(machine.timer, frame)
+            ticks = self.timers.ticks(machine.timer, frame, (CALLEE, "timer"))
             if ticks.__class__ is Event:
                 ticks.origin = "/".join(frame.prefix())
                 return ticks
@@ -111,11 +111,12 @@ class Calls:
                 ending = machine.endings[outcome] = Event(outcome, {})
             return ending
         outputs = {}
-        try:
-            for name, value in machine.outputs.items():
+        for name, value in machine.outputs.items():
+            try:
                 outputs[name] = value.fn(frame.scope)
-        except ExprValueError as exc:
-            return Event("error", error=f"outputs of '{machine.name}': {exc}")
+            except ExprValueError as exc:
+                where = (CALLEE, "outputs", name, *exc.where)
+                return Event("error", error=f"outputs of '{machine.name}': {exc}", where=where)
         return Event(outcome, outputs)
 
     def retry(self, frame: Frame, event: Event) -> Event | None:

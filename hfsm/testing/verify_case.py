@@ -7,10 +7,11 @@ from hfsm.runtime.program import span_ticks
 from hfsm.runtime.run import RunOptions
 from hfsm.testing.expect import Mismatch
 from hfsm.testing.plan import CasePlan
-from hfsm.verify.build import Values, bound_of, verify_program
+from hfsm.verify.build import bound_of, verify_program
 from hfsm.verify.choices import Chooser
 from hfsm.verify.properties import Properties
 from hfsm.verify.search import Budget, Outcome, explore
+from hfsm.verify.values import ANY, Scripts, Values
 
 
 def verify_case(plan: CasePlan) -> tuple[list[Mismatch], Outcome]:
@@ -18,7 +19,9 @@ def verify_case(plan: CasePlan) -> tuple[list[Mismatch], Outcome]:
     assert asked is not None
     top = plan.loaded.machines[plan.top]
     chooser = Chooser()
-    program = verify_program(plan.loaded, plan.registry, sorted(plan.stand_ins), Values(), chooser, plan.dt)
+    machines = sorted(n for n in plan.stand_ins if n in plan.loaded.machines)
+    values = Values(scripts=_scripts(plan))
+    program = verify_program(plan.loaded, plan.registry, machines, values, chooser, plan.dt)
     bound = bound_of(top, asked.bound)
     options = RunOptions(
         plan.top,
@@ -44,3 +47,16 @@ def verify_case(plan: CasePlan) -> tuple[list[Mismatch], Outcome]:
         message = f"verify: not proved - the search stopped at {outcome.states} states (max_states)"
         return [Mismatch(plan.file, line, col, message)], outcome
     return [], outcome
+
+
+def _scripts(plan: CasePlan) -> Scripts:
+    """The outputs the case's stand-in scripts give, each step's a set a call may end with."""
+    found: Scripts = {}
+    for name, stand_in in plan.stand_ins.items():
+        by_agent = found.setdefault(name, {})
+        for agent, steps in stand_in.scripts.items():
+            sets = by_agent.setdefault(ANY if agent is None else agent, [])
+            for step in steps:
+                if step.outputs not in sets:
+                    sets.append(dict(step.outputs))
+    return found

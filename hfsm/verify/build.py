@@ -5,55 +5,21 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping
-from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 from hfsm.checks.context import machine_spec
-from hfsm.errors import UsageError, UserError
+from hfsm.errors import UsageError
 from hfsm.load import Loaded
 from hfsm.names import did_you_mean
 from hfsm.registry import Registry
 from hfsm.runtime.program import Program
 from hfsm.verify.choices import Decider
 from hfsm.verify.standins import stand_in
+from hfsm.verify.values import Values
 from hfsm.world import InputSpec
-from hfsm.yamlio import read_mapping
 
 DEFAULTS: dict[str, Any] = {"int": 0, "float": 0.0, "bool": False, "str": "", "list": [], "dict": {}}
 DEFAULT_BOUND = 600.0
-
-
-@dataclass
-class Values:
-    """`--values FILE`: `outputs: {BEHAVIOUR: {NAME: value}}` and `inputs: {NAME: value}`."""
-
-    outputs: dict[str, dict[str, Any]] = field(default_factory=dict)
-    inputs: dict[str, Any] = field(default_factory=dict)
-
-
-def read_values(path: Path | None) -> Values:
-    if path is None:
-        return Values()
-    doc = read_mapping(path, "values")
-    values, problems = Values(), []
-    for key, value in doc.data.items():
-        if key not in ("outputs", "inputs") or not isinstance(value, dict):
-            hint = did_you_mean(str(key), ["outputs", "inputs"]) or ""
-            problems.append(
-                doc.finding((key,), "E373", f"'{key}': outputs or inputs, each a mapping{hint}", key=True)
-            )
-        elif key == "inputs":
-            values.inputs = dict(value)
-        else:
-            for name, outputs in value.items():
-                if not isinstance(outputs, dict):
-                    problems.append(doc.finding((key, name), "E373", f"outputs of '{name}': a mapping"))
-                else:
-                    values.outputs[str(name)] = dict(outputs)
-    if problems:
-        raise UserError(problems)
-    return values
 
 
 def verify_program(
@@ -67,9 +33,14 @@ def verify_program(
         raise UsageError("--stand-in: the top machine cannot stand in for itself")
     saved = saved_values(loaded)
     outputs = {n: {**saved.get(n, {}), **values.outputs.get(n, {})} for n in {*saved, *values.outputs}}
-    replaced = Registry(stand_in(p.spec, decider, outputs.get(p.spec.name, {})) for p in registry)
+    scripts = values.scripts
+    replaced = Registry(
+        stand_in(p.spec, decider, outputs.get(p.spec.name, {}), scripts.get(p.spec.name, {}))
+        for p in registry
+    )
     for name in stand_ins:
-        replaced.add(stand_in(machine_spec(loaded.machines[name]), decider, outputs.get(name, {})))
+        spec = machine_spec(loaded.machines[name])
+        replaced.add(stand_in(spec, decider, outputs.get(name, {}), scripts.get(name, {})))
     machines = {n: m for n, m in loaded.machines.items() if n not in stand_ins}
     return Program(machines, replaced, dt)
 

@@ -17,9 +17,10 @@ from hfsm.registry import Registry
 from hfsm.runtime.failing import Failure
 from hfsm.runtime.run import RunOptions, RunResult, run
 from hfsm.trace import TraceSink
-from hfsm.verify.build import Values, verify_program
+from hfsm.verify.build import verify_program
 from hfsm.verify.choices import Schedule
 from hfsm.verify.radio import ChoosingWorld
+from hfsm.verify.values import Values
 
 KIND = "schedule"
 
@@ -45,7 +46,7 @@ def read_schedule(path: Path) -> dict[str, Any]:
 
 def replay(loaded: Loaded, registry: Registry, setup: dict[str, Any], sink: TraceSink | None) -> RunResult:
     """Run the schedule's program with its choices; `sink` gets the schedule, then the trace."""
-    values = Values(setup.get("outputs", {}), setup.get("inputs", {}))
+    values = Values(setup.get("outputs", {}), setup.get("inputs", {}), setup.get("scripts", {}))
     decider = Schedule(setup["choices"])
     dt = float(setup["dt"])
     program = verify_program(loaded, registry, list(setup["stand_ins"]), values, decider, dt)
@@ -59,6 +60,7 @@ def replay(loaded: Loaded, registry: Registry, setup: dict[str, Any], sink: Trac
         float(setup["bound"]),
         failures,
         dict(setup.get("agent_params", {})),
+        scopes={a: (str(n), tuple(m)) for a, (n, m) in setup.get("scopes", {}).items()},
     )
     if sink is not None:
         sink.write(schedule_record(setup))

@@ -31,7 +31,7 @@ Check = Callable[[Engine, "Ended | None"], "tuple[str, str, str] | None"]
 
 _RNG = random.Random(0)
 GC_YOUNG = 100_000  # allocations between two young collections while searching (CPython's: 700)
-LIVE = 20_000  # with keys by value, states queued as engines too: the first successor runs on it
+LIVE = 20_000  # states queued as engines too: the first successor runs on it, not on a copy
 
 
 @dataclass
@@ -111,7 +111,7 @@ class _Search:
         shared = shared_objects([program, chooser, program.registry, _RNG, given])
         self.snaps = Snapshots(shared)
         self.key = None if unobserved is None else Keys(shared_numbers(shared), unobserved=unobserved)
-        self.live_cap = 0 if self.key is None else LIVE  # a copy's bytes are no key once run again
+        self.live_cap = LIVE
         self.result = Outcome()
         self.nodes: list[_Node] = []
         self.seen: dict[bytes, int] = {}  # a state's key: the latest tick it was explored at

@@ -11,7 +11,7 @@ be told apart).
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator, Mapping, Sequence
 from typing import Any
 
 from hfsm.primitive import Primitive
@@ -19,6 +19,7 @@ from hfsm.runtime.agent import Agent, Event, Frame, Region
 from hfsm.runtime.host import Host
 from hfsm.spec import BehaviourSpec
 from hfsm.verify.choices import Counter, Decider
+from hfsm.verify.values import ANY
 
 
 class StandInActivity:
@@ -48,27 +49,41 @@ class StandIn(Primitive):
 
     decider: Decider | None = None
     outputs: Mapping[str, Any] = dataclasses.field(default_factory=dict)
+    variants: Mapping[str, Sequence[Mapping[str, Any]]] = dataclasses.field(default_factory=dict)  # by agent
 
     def start_activity(
         self, host: Host, agent: Agent, params: dict[str, Any], where: Frame | Region
     ) -> StandInActivity:
         assert self.decider is not None
         now = host.tick
+        names = sorted(self.spec.outputs or ())
+        outputs = {name: self.outputs.get(name, 0) for name in names}
+        given = self.variants.get(agent.name, self.variants.get(ANY, ()))
+        sets = [{**outputs, **{n: v[n] for n in names if n in v}} for v in given] or [outputs]
+        outcomes = sorted(self.spec.outcomes)
         options = [
-            {"outcome": outcome, "after": after}
+            {"outcome": outcome, "after": after, **({"outputs": one} if len(sets) > 1 else {})}
             for after in durations(host, agent, where)
-            for outcome in sorted(self.spec.outcomes)
+            for outcome in outcomes
+            for one in sets
         ]
         counter: Counter = host.world  # type: ignore[attr-defined]  # the engine's, which has one
         what = f"{self.spec.name} of {agent.name} at {'/'.join(where.path())}"
         chosen = self.decider.pick(counter, now, "stand_in", what, options)
-        outputs = {name: self.outputs.get(name, 0) for name in sorted(self.spec.outputs or ())}
-        return StandInActivity(str(chosen["outcome"]), outputs, now + int(chosen["after"]))
+        ended = chosen.get("outputs", sets[0])
+        return StandInActivity(str(chosen["outcome"]), dict(ended), now + int(chosen["after"]))
 
 
-def stand_in(spec: BehaviourSpec, decider: Decider, outputs: Mapping[str, Any]) -> StandIn:
+def stand_in(
+    spec: BehaviourSpec,
+    decider: Decider,
+    outputs: Mapping[str, Any],
+    variants: Mapping[str, Sequence[Mapping[str, Any]]] | None = None,
+) -> StandIn:
+    """`variants`: by agent (ANY: the others), the sets of outputs a call may end with (a choice
+    when more than one); each over `outputs`."""
     spec = dataclasses.replace(spec, kind="primitive", world=None)
-    return StandIn(spec, _unused, decider, dict(outputs))
+    return StandIn(spec, _unused, decider, dict(outputs), dict(variants or {}))
 
 
 def durations(host: Host, agent: Agent, where: Frame | Region) -> list[int]:

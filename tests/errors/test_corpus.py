@@ -96,3 +96,21 @@ def test_colour_only_on_a_terminal_and_never_with_no_color(monkeypatch: pytest.M
     painted = snippet.render(finding, ["do: x"], colour=True)
     assert "\x1b[31m" in painted and "\x1b[0m" in painted
     assert re.sub(r"\x1b\[[0-9;]*m", "", painted) == snippet.render(finding, ["do: x"])
+
+
+@pytest.mark.parametrize(
+    ("line", "col", "pad"),
+    [
+        ("do: x", 5, 4),
+        ("doc: 中文 do: x", 14, 15),  # two characters of two columns each
+        ("doc: é do: x", 12, 11),  # é precomposed: one column
+        ("doc: e\u0301 do: x", 13, 11),  # e and a combining accent: one column
+        ("doc: 😀 do: x", 12, 12),
+        ("\tdo: x", 6, 8),  # a tab is shown as four spaces
+    ],
+)
+def test_the_caret_is_under_the_span_in_terminal_columns(line: str, col: int, pad: int) -> None:
+    finding = Finding("m.yaml", 1, col, "E300", "unknown behaviour 'x'", Severity.ERROR)
+    *_, shown, carets = snippet.render(finding, [line]).splitlines()
+    assert carets == "  | " + " " * pad + "^"
+    assert shown == "1 | " + line.replace("\t", snippet.TAB)

@@ -1,6 +1,7 @@
 """A run-time error inside an expression points at that expression: the `${…}` of a `with:` value (at
 any depth of a dict, a list or a text of several), a guard, a watch (the state's or the machine's), a
-timer, a retry's times or delay: its line and column, and the caret under it."""
+timer, a retry's times or delay, a called machine's own `outputs:` or `timer:` (in that machine's file):
+its line and column, and the caret under it."""
 
 from __future__ import annotations
 
@@ -24,7 +25,11 @@ CASES = {
     "state_timer.yaml": (6, 13, "${vars.items[2]}"),
     "retry_times.yaml": (9, 33, "${1 // params.zero}"),
     "retry_delay.yaml": (11, 15, "${1 / params.zero}"),
+    "callee_outputs.yaml": (6, 9, "${vars.items[5]}"),
+    "outputs_fail.yaml": (6, 9, "${vars.items[5]}"),
+    "callee_timer.yaml": (5, 9, "${1 / params.zero}"),
 }
+IN = {"callee_outputs.yaml": "outputs_fail.yaml", "callee_timer.yaml": "timer_fail.yaml"}  # the file at fault
 
 
 @pytest.mark.parametrize("name", sorted(CASES))
@@ -36,8 +41,9 @@ def test_a_run_time_error_points_at_the_expression_that_failed(
     line, col, under = CASES[name]
     assert main([name, "--world", "none", "--quiet"]) == 1
     printed = capsys.readouterr().err.splitlines()
-    assert printed[0].startswith(f"{name}:{line}:{col}: error: robot at t=")
-    source = (RUN / name).read_text(encoding="utf-8").splitlines()[line - 1]
+    file = IN.get(name, name)
+    assert printed[0].startswith(f"{file}:{line}:{col}: error: robot at t=")
+    source = (RUN / file).read_text(encoding="utf-8").splitlines()[line - 1]
     assert printed[2].endswith(source)
     carets = printed[3].split("| ", 1)[1]
     assert carets == " " * (col - 1) + "^" * len(under)

@@ -82,6 +82,29 @@ def test_a_new_rasteriser_reads_the_scene_afresh(world_factory: Callable[..., Wo
     assert (pictures[0] == pictures[1]).all()
 
 
+def test_faces_kept_for_a_physics_step_draw_what_a_fresh_placement_draws(
+        world_factory: Callable[..., World]) -> None:
+    """The world's rasteriser places the faces once a physics step; moving robots, several images a
+    step and a body added mid-run give the pictures of a rasteriser that places them for every image."""
+    world = world_factory(TWO)
+    fresh = Rasteriser(world.client)
+    for robot in world.robots.values():
+        robot.set_velocity(0.1, 0.0, 0.4)
+    for step in range(4):
+        if step == 2:
+            _static_box(world.client, (0.2, 0.2, 0.4), (0.0, 0.0, 0.4), (1.0, 0.0, 0.0))
+        for robot in world.robots.values():
+            for camera in ("forward", "down"):
+                kept, kept_mask = robot._render(camera, segmentation=True)
+                pos, orn = p.getBasePositionAndOrientation(robot._body.body, physicsClientId=robot._cid)
+                drawn, mask = fresh.render(world_camera(robot.camera_model(camera), pos, orn),
+                                           segmentation=True)
+                assert (kept == drawn).all() and kept_mask is not None and mask is not None
+                assert (kept_mask == mask).all()
+        world.advance(0.25)
+    assert world.robots["r1"]._cameras._placed is not None  # type: ignore[attr-defined]
+
+
 @settings(max_examples=60, deadline=None)
 @given(st.lists(st.tuples(st.floats(-5, 25), st.floats(-5, 20)), min_size=3, max_size=3),
        st.booleans())

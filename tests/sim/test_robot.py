@@ -97,3 +97,18 @@ def test_odometry_drift_is_seeded(world_factory: Callable[..., World]) -> None:
     assert poses[0] == poses[1]
     assert poses[0] != poses[2]
     assert math.hypot(poses[0][0], poses[0][1]) == pytest.approx(0.1, abs=0.02)
+
+
+def test_a_step_of_the_leash_is_ahead_then_leashed_then_pushed(world_factory: Callable[..., World]) -> None:
+    """`_pre_step` (one function, for speed) sets the target `_ahead`, `_leashed` and `_push_target`
+    set, to the bit, walking freely and pushing against a wall."""
+    world = world_factory({"r1": {"x": 1.8, "y": 0.0, "yaw": 0.0}})  # 0.14 m from the wall ahead
+    robot = world.robots["r1"]
+    dt = 1.0 / world.physics_hz
+    for command in ((0.1, 0.0, 0.0), (0.1, 0.05, 0.5), (-0.06, -0.05, -0.5), (0.0, 0.0, 0.3)):
+        robot.set_velocity(*command)
+        for _ in range(240):
+            expected = robot._leashed(robot._ahead(dt), dt)
+            robot._pre_step(dt)
+            assert robot._target == expected
+            world.advance(dt)

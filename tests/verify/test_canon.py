@@ -43,9 +43,10 @@ def test_two_paths_to_one_situation_are_explored_once(
     assert (code, apart["states"]) == (0, 6)
 
 
-COUNTS = [  # states explored with keys as bytes (as before keys by value existed), and by value
+COUNTS = [  # states explored with keys as bytes, and by value (a state's first successor runs on it, not on
+    # a copy, so its bytes may differ from a copy's: quorum 264 by bytes, where copies only gave 255)
     ("handshake", ["--agents", "a,b", "--loss", "1", "--fail", "1"], 847, 689),
-    ("quorum", ["--agents", "a,b,c", "--goal", "success", "--loss", "1", "--fail", "1"], 255, 211),
+    ("quorum", ["--agents", "a,b,c", "--goal", "success", "--loss", "1", "--fail", "1"], 264, 211),
     ("ask_until_answered", ["--agents", "a,b", "--goal", "success", "--loss", "1"], 14, 11),
     ("watch_join", ["--goal", "success"], 20, 20),
 ]

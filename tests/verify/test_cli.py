@@ -50,6 +50,11 @@ def test_bad_input_is_exit_2_with_every_problem_at_its_place(
     assert "did you mean 'meet'?" in capsys.readouterr().err
     assert verify_cli.main([meet, "--agents", "a,b", "--agent-param", "c:walk=1"]) == 2
     assert verify_cli.main([meet, "--loss", "-1"]) == 2
+    for scope in ("p1:a,c", "p1", "P1:a,b"):
+        assert verify_cli.main([meet, "--agents", "a,b", "--scope", scope]) == 2
+    assert "did you mean 'a'?" not in capsys.readouterr().err
+    assert verify_cli.main([meet, "--agents", "a,b", "--scope", "p:a,b", "--scope", "q:b"]) == 2
+    assert "b is already in scope 'p'" in capsys.readouterr().err
     assert not list(tmp_path.glob("*.jsonl")) and not (EXAMPLES / "meet.ce.jsonl").exists()
 
 
@@ -62,3 +67,24 @@ def test_the_monitor_reads_a_counterexample(capsys: pytest.CaptureFixture[str], 
     assert records[0]["kind"] == "schedule" and records[0]["path"] == []
     assert monitor.top_name(records, tmp_path / "ce.jsonl") == "ping_once"
     assert {r["agent"] for r in records[1:]} == {"a", "b"}
+
+
+def test_a_bad_values_file_is_exit_2_with_every_problem_at_its_place(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    values = tmp_path / "values.yaml"
+    values.write_text(
+        "stand_in: {}\n"
+        "stand_ins:\n"
+        "  sense: [{after: 1, outcom: measured}, {outputs: 3}]\n"
+        "  look: {by_agent: {a: 1}}\n"
+    )
+    args = [str(DATA / "measure.yaml"), "--stand-in", "sense", "--values", str(values)]
+    assert verify_cli.main(args) == 2
+    err = [line for line in capsys.readouterr().err.splitlines() if "error[" in line]
+    assert err == [
+        f"{values}:1:1: error[E373]: 'stand_in': outputs, inputs or stand_ins, each a mapping; did you mean 'stand_ins'?",
+        f"{values}:3:22: error[E373]: 'outcom': not a key of a step; did you mean 'outcome'?",
+        f"{values}:3:51: error[E373]: outputs: a mapping",
+        f"{values}:4:24: error[E373]: a step: a mapping of after, outcome, outputs",
+    ]

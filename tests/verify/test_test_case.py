@@ -43,3 +43,32 @@ def test_a_case_gives_expect_or_verify(capsys: pytest.CaptureFixture[str], tmp_p
     (tmp_path / "both.test.yaml").write_text(both)
     assert test_cli.main([str(tmp_path / "both.test.yaml")]) == 2
     assert "both.test.yaml:3:3: error[T330]" in capsys.readouterr().err
+
+
+MEASURE = """\
+tests:
+  far:
+    machine: measure
+    stand_ins:
+      sense: {after: 0.5, outcome: measured, outputs: {distance: 2}}
+    verify: {}
+  far_or_touching:
+    machine: measure
+    stand_ins:
+      sense: [{outcome: measured, outputs: {distance: 2}}, {outcome: measured, outputs: {distance: 0}}]
+    verify: {}
+"""
+
+
+def test_a_verify_case_takes_its_stand_ins_outputs(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    """A case's stand-in scripts give the outputs its calls may end with: each step's is a choice."""
+    for name in ("measure", "sense"):
+        shutil.copy(DATA / f"{name}.yaml", tmp_path)
+    (tmp_path / "measure.test.yaml").write_text(MEASURE)
+    assert test_cli.main([str(tmp_path / "measure.test.yaml")]) == 1
+    captured = capsys.readouterr()
+    assert "1 passed, 1 failed" in captured.out + captured.err
+    assert "measure.test.yaml:11:5: verify: error (robot): measure/plan: division by zero" in captured.out
+    assert "'outputs': {'distance': 0}" in captured.out
