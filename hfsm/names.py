@@ -11,6 +11,7 @@ NAME_RE = re.compile(NAME_PATTERN)
 NAME_RULE = "a lowercase letter, then lowercase letters, digits and '_'"
 RESERVED_OUTCOMES = frozenset({"error"})
 RESERVED_MESSAGES = frozenset({"timeout", "error"})
+KEEP = ("all", "last")  # send's `keep`: every copy kept until taken, or the sender's newest
 
 
 def is_name(text: object) -> bool:

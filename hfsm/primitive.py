@@ -53,6 +53,8 @@ class Message:
     to: str
     data: Mapping[str, Any]
     sent_tick: int
+    keep: str = "all"  # "last": replaces the sender's message of the same name not yet taken
+    id: int = 0  # the number of its `send` record in the trace (0: none, e.g. an operator's message)
 
 
 class Context(Protocol):
@@ -79,7 +81,9 @@ class Context(Protocol):
     def receive(self, name: str) -> Message | None:
         """Take the earliest message of that name from the mailbox, if any."""
 
-    def send(self, message: str, to: str = "others", **data: Any) -> None: ...
+    def send(self, message: str, to: str = "others", *, keep: str = "all", **data: Any) -> None:
+        """Send `data` as `message` (`keep`: 'all', or 'last' for a status that replaces the sender's
+        copy not yet taken, docs/REFERENCE.md#messages-between-agents)."""
 
     @property
     def scope(self) -> str:

@@ -17,6 +17,7 @@ class ParamSpec:
     required: bool = True
     default: Any = None
     doc: str = ""
+    choices: tuple[str, ...] = ()  # the values a literal may take (empty: any of its type)
 
 
 @dataclass(frozen=True)

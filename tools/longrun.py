@@ -198,6 +198,20 @@ def growth(samples: list[Sample]) -> float:
     return round(settled[-1].rss_mb - settled[0].rss_mb, 1) if settled else 0.0
 
 
+def slope(samples: list[Sample]) -> float | None:
+    """Resident memory's least-squares slope over the samples from the second on, in MB per simulated
+    minute (the first is taken before the team has settled); None with fewer than 3 samples."""
+    settled = samples[1:]
+    if len(settled) < 2:
+        return None
+    xs, ys = [s.simulated / 60 for s in settled], [s.rss_mb for s in settled]
+    mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+    spread = sum((x - mx) ** 2 for x in xs)
+    if spread == 0:
+        return None
+    return sum((x - mx) * (y - my) for x, y in zip(xs, ys, strict=True)) / spread
+
+
 def report(run: dict[str, Any], how: str) -> list[str]:
     samples = [Sample(**s) for s in run["samples"]]
     rss = [s.rss_mb for s in samples]
@@ -212,7 +226,7 @@ def report(run: dict[str, Any], how: str) -> list[str]:
         f"- resident memory: {rss[0]:.0f} MB at {_when(samples[0].simulated)}, "
         f"{min(rss):.0f}-{max(rss):.0f} MB "
         f"over the run, {rss[-1]:.0f} MB at the last sample (peak {run['peak_mb']:.0f} MB); from the second "
-        f"sample to the last {growth(samples):+.1f} MB",
+        f"sample to the last {growth(samples):+.1f} MB" + _slope_text(samples),
         f"- trace: {run['trace_lines']} lines, {run['trace_bytes'] / 1e6:.1f} MB, "
         + ("every line one JSON object, the last complete" if run["trace_whole"]
            else f"NOT whole: {run['trace_problem']}"),
@@ -224,6 +238,11 @@ def report(run: dict[str, Any], how: str) -> list[str]:
               "|---|" + "---|" * len(shown),
               "| resident MB | " + " | ".join(f"{s.rss_mb:.0f}" for s in shown) + " |"]
     return lines
+
+
+def _slope_text(samples: list[Sample]) -> str:
+    rate = slope(samples)
+    return "" if rate is None else f"; slope {rate:+.2f} MB per simulated minute (least squares)"
 
 
 def _rates(samples: list[Sample], length: float) -> list[str]:

@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from hfsm.builtins.registry import Builtin
-from hfsm.names import RESERVED_MESSAGES, is_name
+from hfsm.names import KEEP, RESERVED_MESSAGES, is_name
 from hfsm.runtime.agent import Agent, Event, Frame, Region
 from hfsm.runtime.host import Host
 from hfsm.spec import BehaviourSpec, ParamSpec
@@ -15,7 +15,7 @@ def start(host: Host, agent: Agent, frame: Frame, params: dict[str, Any], where:
     name, to, data = params["message"], params.get("to", "others"), params.get("data", {})
     if not is_name(name) or name in RESERVED_MESSAGES:
         return Event("error", error=f"send: bad message name {name!r}")
-    problem = host.send(agent, where, name, to, data)
+    problem = host.send(agent, where, name, to, data, params.get("keep", "all"))
     return Event("error", error=problem) if problem else Event("sent")
 
 
@@ -27,6 +27,11 @@ SEND = Builtin(
             "message": ParamSpec("message", "str"),
             "to": ParamSpec("to", "str", required=False, default="others"),
             "data": ParamSpec("data", "dict", required=False, default={}),
+            "keep": ParamSpec(
+                "keep", "str", required=False, default="all", choices=KEEP,
+                doc="'all': every copy waits to be taken; 'last': a status, the newest copy replaces "
+                "this sender's copy of the same name not yet taken",
+            ),
         },
         ("sent",),
         doc="Send a message to the others, all, or one agent.",

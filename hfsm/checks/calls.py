@@ -71,6 +71,10 @@ def _check_params(
             if isinstance(value, str) and reads_like_expression(value):
                 message += f"; write '{wrapped(value)}' for an expression"
             ctx.error(mf, (*where, "with", key), "E306", message)
+        elif param.choices and not _is_expr(value) and value not in param.choices:
+            values = " or ".join(f"'{c}'" for c in param.choices)
+            ctx.error(mf, (*where, "with", key), "E332", f"param '{key}' of '{spec.name}' takes {values}, "
+                      f"not {shown(value)}{did_you_mean(str(value), param.choices)}")
     for key, param in spec.params.items():
         if param.required and key not in given:
             ctx.error(mf, (*where, "do"), "E307", f"'{spec.name}' needs param '{key}'")

@@ -9,7 +9,7 @@ latest well-read version of the machine.
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 from lsprotocol import types as lsp
 
@@ -17,12 +17,14 @@ from hfsm.library import MachineFile
 from hfsm.lsp.analysis import Analysis
 from hfsm.lsp.hover import describe
 from hfsm.model import CallState, Machine
+from hfsm.spec import ParamSpec
 
 _EXPR = re.compile(r"\b(vars|params|in|state)\.([A-Za-z0-9_]*)$")
 _DO = re.compile(r"(?:^|[\s{,])do:\s*([a-z0-9_]*)$")
 _TARGET = re.compile(r"(?:^|[\s{,])(?:then|else|initial):\s*([a-z0-9_]*)$")
 _FLOW_KEY = re.compile(r"([a-z_]+):\s*\{([^{}]*)$")
 _BLOCK_KEY = re.compile(r"^\s*(?:-\s+)?([a-z_]+):\s*(?:#.*)?$")
+_VALUE = re.compile(r"(?:^|[\s{,])([a-z_][a-z0-9_]*):\s*([a-z_]*)$")
 _STATE_FIELDS = ("time", "attempt")
 
 Kind = lsp.CompletionItemKind
@@ -46,7 +48,9 @@ def complete(
     key, at_key = _enclosing(lines, pos.line, before)
     state = _state_at(machine, pos.line) if machine is not None else None
     callee = analysis.specs.get(state.do) if isinstance(state, CallState) else None
-    if key == "with" and at_key and callee is not None:
+    if key == "with" and callee is not None:
+        if not at_key:
+            return _values(callee.params, before)
         params = callee.params.values()
         return [_item(p.name, Kind.Property, p.type + ("" if p.required else " (optional)")) for p in params]
     if key in ("on", "any"):
@@ -67,6 +71,15 @@ def complete(
 def _item(label: str, kind: lsp.CompletionItemKind, detail: str, doc: str = "") -> lsp.CompletionItem:
     documentation = lsp.MarkupContent(kind=lsp.MarkupKind.Markdown, value=doc) if doc else None
     return lsp.CompletionItem(label=label, kind=kind, detail=detail, documentation=documentation)
+
+
+def _values(params: Mapping[str, ParamSpec], before: str) -> list[lsp.CompletionItem]:
+    """The values of the param whose value the cursor is at, when it takes a fixed set (`keep`)."""
+    at = _VALUE.search(before)
+    param = params.get(at.group(1)) if at is not None else None
+    if param is None:
+        return []
+    return [_item(c, Kind.EnumMember, param.name, param.doc) for c in param.choices]
 
 
 def _behaviours(analysis: Analysis) -> list[lsp.CompletionItem]:

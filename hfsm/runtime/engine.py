@@ -128,9 +128,11 @@ class Engine:
 
     # --- the radio -----------------------------------------------------------------------------------
 
-    def send(self, agent: Agent, where: Frame | Region, name: str, to: str, data: dict[str, Any]) -> str:
+    def send(
+        self, agent: Agent, where: Frame | Region, name: str, to: str, data: dict[str, Any], keep: str = "all"
+    ) -> str:
         """Post a message from the behaviour running at `where`; a problem as text, or ''."""
-        return self.mailbox.send(agent, where, name, to, data)
+        return self.mailbox.send(agent, where, name, to, data, keep)
 
     def deliver(self, messages: list[Message]) -> None:
         self.mailbox.deliver(messages)

@@ -23,5 +23,7 @@ class Host(Protocol):
     def span(self, seconds: float) -> int:
         """Ticks of a span of seconds begun now (docs/REFERENCE.md#time-and-timers)."""
 
-    def send(self, agent: Agent, where: Frame | Region, name: str, to: str, data: dict[str, Any]) -> str:
+    def send(
+        self, agent: Agent, where: Frame | Region, name: str, to: str, data: dict[str, Any], keep: str = "all"
+    ) -> str:
         """Post a message from the behaviour running at `where`; a problem as text, or ''."""

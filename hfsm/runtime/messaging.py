@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from hfsm.names import KEEP
 from hfsm.primitive import Message
 from hfsm.runtime.agent import Agent, Event, Frame, Region, leaves
 from hfsm.runtime.cancel import Cancelling
@@ -38,9 +39,14 @@ class Messaging:
         self.clock = clock
         self.ledger = ledger
         self.cancelling = cancelling
+        self.sent = 0  # messages sent in the run: a `send` record's id, which its `receive`s give
 
-    def send(self, agent: Agent, where: Frame | Region, name: str, to: str, data: dict[str, Any]) -> str:
+    def send(
+        self, agent: Agent, where: Frame | Region, name: str, to: str, data: dict[str, Any], keep: str = "all"
+    ) -> str:
         """Post a message, its name qualified by the scope it is sent under; a problem as text, or ''."""
+        if keep not in KEEP:
+            return f"send: keep must be {' or '.join(repr(k) for k in KEEP)}, not {keep!r}"
         radio = radio_at(where)
         if not radio.top:
             chosen = scoped_targets(radio, agent.name, to)
@@ -56,10 +62,13 @@ class Messaging:
             targets = [to]
         else:
             return f"send: no agent named '{to}' (agents: {', '.join(self.by_name)})"
+        self.sent += 1
+        number = self.sent
         if self.ledger.records is not None:
-            self.ledger.emit(agent, where.path(), "send", message=name, to=to, data=data)
+            extra = {"keep": keep} if keep != "all" else {}
+            self.ledger.emit(agent, where.path(), "send", message=name, to=to, data=data, id=number, **extra)
         for target in targets:
-            self.world.post(Message(name, agent.name, target, dict(data), self.clock.tick))
+            self.world.post(Message(name, agent.name, target, dict(data), self.clock.tick, keep, number))
         return ""
 
     def deliver(self, messages: list[Message]) -> None:
@@ -71,10 +80,16 @@ class Messaging:
             if message.name == NOTICE:
                 self.team.receive(message)
                 continue
-            agent.mailbox.append(message)
+            if agent.result is not None:
+                continue  # the agent has ended: nobody will take it
+            if message.keep == "last":
+                replaced = agent.mailbox.replace(message)
+            else:
+                agent.mailbox.append(message)
+                replaced = False
             if self.ledger.records is not None:
                 path = paths.get(agent.name) or paths.setdefault(agent.name, _first_leaf(agent))
-                self.ledger.records.receive(agent, path, message)
+                self.ledger.records.receive(agent, path, message, replaced)
 
     def message_arc(self, frame: Frame, state: RState) -> bool:
         """The earliest message the state maps takes its arc (or is held): whether one did. A state

@@ -11,6 +11,7 @@ from typing import Any
 
 from greenlet import GreenletExit, greenlet
 
+from hfsm.names import KEEP
 from hfsm.primitive import Cancelled, Message, Outcome, Primitive
 from hfsm.runtime.agent import Agent, Event, Frame, Region
 from hfsm.runtime.host import Host
@@ -73,8 +74,10 @@ class RunContext:
     def receive(self, name: str) -> Message | None:
         return self._agent.take_message((name,), radio_at(self._where).prefix)
 
-    def send(self, message: str, to: str = "others", **data: Any) -> None:
-        self._host.send(self._agent, self._where, message, to, data)
+    def send(self, message: str, to: str = "others", *, keep: str = "all", **data: Any) -> None:
+        if keep not in KEEP:  # the primitive's error, at its line
+            raise ValueError(f"send: keep must be 'all' or 'last', not {keep!r}")
+        self._host.send(self._agent, self._where, message, to, data, keep)
 
 
 class PrimitiveActivity:

@@ -44,9 +44,13 @@ class Records:
     def write(self, agent: Agent, path: list[str], kind: str, **extra: Any) -> None:
         self.sink.write({"t": self.clock.time, "agent": agent.name, "path": path, "kind": kind, **extra})
 
-    def receive(self, agent: Agent, path: list[str], message: Message) -> None:
-        """A message entered `agent`'s mailbox (`path`: where the agent runs)."""
-        self.write(agent, path, "receive", message=message.name, sender=message.sender, data=message.data)
+    def receive(self, agent: Agent, path: list[str], message: Message, replaced: bool = False) -> None:
+        """A message entered `agent`'s mailbox (`path`: where the agent runs); `replaced`: in place of
+        the sender's copy not yet taken (`keep: last`)."""
+        extra: dict[str, Any] = {"id": message.id} if message.id else {"data": message.data}
+        if replaced:
+            extra["replaced"] = True
+        self.write(agent, path, "receive", message=message.name, sender=message.sender, **extra)
 
     def put(self, record: dict[str, Any]) -> None:
         """A record made elsewhere (a world's), written as it is."""
@@ -183,23 +187,28 @@ class TextRecords(Records):
             self._write_kept()
         super().write(agent, path, kind, **extra)
 
-    def receive(self, agent: Agent, path: list[str], message: Message) -> None:
-        """Kept as a line. A message said to many arrives as copies of one dict (the engine's `send`):
-        its data is encoded once for all the copies that arrive in a row within a tick."""
-        data, last = message.data, self.last_data
-        if last is not None and _copies(data, last[0]):
-            text = last[1]
-        else:
-            try:
-                text = encode(data)
-            except ValueError:  # NaN or an infinity: the sink's own way
-                super().receive(agent, path, message)
-                return
-            self.last_data = (data, text)
+    def receive(self, agent: Agent, path: list[str], message: Message, replaced: bool = False) -> None:
+        """Kept as a line: the number of its `send` record, or its data when it has none (encoded once
+        for the copies of one dict that arrive in a row within a tick)."""
         json = self.json
+        if message.id:
+            said = f'"id": {message.id}'
+        else:
+            data, last = message.data, self.last_data
+            if last is not None and _copies(data, last[0]):
+                text = last[1]
+            else:
+                try:
+                    text = encode(data)
+                except ValueError:  # NaN or an infinity: the sink's own way
+                    super().receive(agent, path, message, replaced)
+                    return
+                self.last_data = (data, text)
+            said = f'"data": {text}'
         where = ", ".join([json[name] for name in path])
         self.keep(f', "agent": {json[agent.name]}, "path": [{where}], "kind": "receive", "message": '
-                  f'{json[message.name]}, "sender": {json[message.sender]}, "data": {text}' + _END)
+                  f'{json[message.name]}, "sender": {json[message.sender]}, {said}'
+                  + (', "replaced": true' if replaced else "") + _END)
         if len(self.kept) >= KEEP_MOST:  # a team's messages: thousands of lines a tick, megabytes
             self._write_kept()
 

@@ -84,14 +84,24 @@ def greedy_groups(
     pool = sorted(set(ids))
     n, _ = group_size(len(pool), n_groups)
     groups: list[tuple[str, ...]] = []
+    known: dict[str, list[tuple[str, float]]] = {}  # each robot's pairs that R holds (others are 0)
+    for (a, b), value in rel.items():
+        if a < b:  # the keys `pair` makes; row_sum reads no other
+            known.setdefault(a, []).append((b, value))
+            known.setdefault(b, []).append((a, value))
 
     def seed_key(r: str) -> tuple[float, float, str]:
-        return (-row_sum(r, pool, rel), ties.seed(r) if ties else 0.0, r)
+        # row_sum(r, pool, rel): fsum is exactly rounded, so leaving out the zeros of pairs R does
+        # not hold changes nothing
+        total = math.fsum([v for o, v in known.get(r, ()) if o in in_pool])
+        return (-total, ties.seed(r) if ties else 0.0, r)
 
     def partner_key(seed: str, r: str) -> tuple[float, tuple[float, ...], str]:
         return (-rel.get(pair(seed, r), 0.0), ties.partner(seed, r) if ties else (), r)
 
+    in_pool: set[str] = set()
     for _ in range(n_groups):
+        in_pool = set(pool)
         seed = min(pool, key=seed_key)
         rest = [r for r in pool if r != seed]
         partners = sorted(rest, key=lambda r: partner_key(seed, r))[: n - 1]

@@ -1,10 +1,6 @@
-"""tararc_exchange: robots share their data over a lossy radio and agree on whose data they hold.
-
-Each robot says the data it holds (its own and every teammate's it has heard, directly or relayed)
-and merges what it hears, until every teammate still talking says it holds the same robots. A robot
-that fails while the team shares is then in every survivor's set or in none: one that heard its
-data relays it to the others, so a lost copy cannot leave it in some robots' plans and not others'.
-"""
+"""The pure steps of TARARC's state exchange, which machines/tararc_exchange.yaml loops over: the
+radio (tell, listen) is the machine's; what a robot holds, merging a teammate's copy and deciding
+"everyone heard everyone" are these (`hfsm_behaviours.tararc.holdings`), with no radio inside."""
 
 from __future__ import annotations
 
@@ -12,90 +8,38 @@ from typing import Any
 
 from hfsm.primitive import Context, Outcome, primitive
 from hfsm.runtime.program import span_ticks
+from hfsm_behaviours.tararc import holdings
+
+NEVER = 1e6  # seconds: `wake` when only a message can change the decision
 
 
-class Holdings:
-    """What one robot holds of the exchange, and what it heard each teammate say it holds."""
-
-    def __init__(self, me: str, data: Any, team: set[str] | None) -> None:
-        self.me = me
-        self.team = team  # None: open, the team is whoever is heard
-        self.held: dict[str, Any] = {me: data}
-        self.says: dict[str, frozenset[str]] = {}  # teammate -> the robots it last said it holds
-        self.last: dict[str, int] = {}  # teammate -> the tick it was last heard in
-
-    def member(self, robot: str) -> bool:
-        return self.team is None or robot in self.team or robot == self.me
-
-    def hear(self, sender: str, held: dict[str, Any], team: list[Any] | None, tick: int) -> bool:
-        """Merge a teammate's holdings (and, when this robot could not meet its team, the team the
-        teammate met: `team`); whether this robot now holds more."""
-        if self.team is None and team is not None:
-            self.team = ({str(r) for r in team} | {sender}) - {self.me}
-        if sender == self.me or not self.member(sender):
-            return False
-        self.last[sender] = tick
-        theirs = {str(r): d for r, d in held.items() if self.member(str(r))}
-        self.says[sender] = frozenset(theirs)
-        more = {r: d for r, d in theirs.items() if r not in self.held}
-        self.held.update(more)
-        return bool(more)
-
-    def silent(self, robot: str, tick: int, start: int, quiet: int | None) -> bool:
-        return quiet is not None and tick - self.last.get(robot, start) >= quiet
-
-    def agreed(self, tick: int, start: int, quiet: int | None) -> bool:
-        """Every teammate is held or silent (open, until a teammate that met the team names it:
-        `quiet` has passed), and every teammate held that still talks last said it holds exactly
-        the robots this one holds."""
-        if self.team is None:
-            if quiet is None or tick - start < quiet:
-                return False
-        elif any(r not in self.held and not self.silent(r, tick, start, quiet) for r in self.team):
-            return False
-        mine = frozenset(self.held)
-        return all(self.says.get(r) == mine or self.silent(r, tick, start, quiet)
-                   for r in self.held if r != self.me)
-
-
-@primitive(outcomes=["agreed"], outputs=["heard", "team", "held", "talking"])
-def tararc_exchange(ctx: Context, *, message: str, data: dict[str, Any], team: list[Any],
-                    silence: float = 0.0, every: float = 0.5, open: bool = False) -> Outcome:
-    """Say `{held: {robot: data}, team: [robots]}` as `message` (as `say` sends it: `{round,
-    data}`) at once, again whenever this robot holds more, and every `every` seconds; merge what
-    teammates say; end when every teammate of `team` (but this one) is held and every teammate held
-    last said the same set of robots. With `silence` > 0 a teammate not heard for `silence` seconds
-    (from the start, if never) is neither waited for nor asked to agree: it failed. `open`: this
-    robot could not meet its team; it takes the team a teammate that met it says, or, if none does,
-    whoever it hears within `silence` seconds. Copies from robots outside the team, and robots
-    outside it that they hold, are read and dropped. Outputs `heard`, the teammates' data by id,
-    `team`, their ids, `held`, `heard` with this robot's own, and `talking`, the teammates held
-    that are not silent (the ones to wait for at a closing barrier)."""
-    hold = Holdings(ctx.agent, data, None if open else {str(r) for r in team} - {ctx.agent})
-    start, pause = ctx.tick, max(1, span_ticks(every, ctx.dt))
+@primitive(outcomes=["held"], outputs=["hold", "said"])
+def tararc_hold(ctx: Context, *, data: dict[str, Any], team: list[Any], silence: float = 0.0,
+                open: bool = False) -> Outcome:
+    """What this robot holds as the exchange starts: its own `data`, the `team` (but this robot) to
+    agree with (`open`: not known yet, the team a teammate that met it says, or whoever is heard
+    within `silence` s), a teammate silent for `silence` s (> 0) failed. `said`: what it says."""
     quiet = span_ticks(silence, ctx.dt) if silence > 0 else None
-    due = start
+    hold = holdings.holding(ctx.agent, data, None if open else team, ctx.tick, quiet)
+    return Outcome("held", hold=hold, said=holdings.said(hold))
 
-    def settle() -> bool:
-        nonlocal due
-        more = False
-        while (m := ctx.receive(message)) is not None:
-            said = m.data.get("data", {})
-            held = said.get("held") if isinstance(said, dict) else None
-            if isinstance(held, dict):
-                met = said.get("team")
-                team_met = met if isinstance(met, list) else None
-                more = hold.hear(m.sender, held, team_met, ctx.tick) or more
-        if more or ctx.tick >= due:
-            said = {"held": dict(sorted(hold.held.items()))}
-            if hold.team is not None:
-                said["team"] = sorted(hold.team | {ctx.agent})
-            ctx.send(message, round=0, data=said)
-            due = ctx.tick + pause
-        return hold.agreed(ctx.tick, start, quiet)
 
-    ctx.wait_until(settle)
-    heard = {r: d for r, d in sorted(hold.held.items()) if r != ctx.agent}
-    talking = [r for r in heard if not hold.silent(r, ctx.tick, start, quiet)]
-    return Outcome("agreed", heard=heard, team=sorted(heard), held=dict(sorted(hold.held.items())),
-                   talking=talking)
+@primitive(outcomes=["more", "same"], outputs=["hold", "said"])
+def tararc_merge(ctx: Context, *, hold: dict[str, Any], sender: str, said: dict[str, Any]) -> Outcome:
+    """A teammate's copy (`said`, from `sender`: `{held: {robot: data}, team: [robots]}`) merged
+    into `hold`: `more` when this robot now holds more robots' data. Copies from robots outside the
+    team, and robots outside it that they hold, are read and dropped."""
+    new, more = holdings.merge(hold, sender, said, ctx.tick)
+    return Outcome("more" if more else "same", hold=new, said=holdings.said(new))
+
+
+@primitive(outcomes=["agreed", "waiting"], outputs=["wake", "heard", "team", "held", "talking"])
+def tararc_agreed(ctx: Context, *, hold: dict[str, Any]) -> Outcome:
+    """Everyone heard everyone: every teammate is held or silent, and every teammate held that still
+    talks last said it holds the robots this one holds. `wake`: seconds until a silence alone could
+    change that (1e6: never). Outputs `heard` (the teammates' data by id), `team` (their ids), `held`
+    (with this robot's own) and `talking` (the teammates held that are not silent)."""
+    ticks = holdings.wake(hold, ctx.tick)
+    out = holdings.results(hold, ctx.tick)
+    return Outcome("agreed" if holdings.agreed(hold, ctx.tick) else "waiting",
+                   wake=NEVER if ticks is None else round(ticks * ctx.dt, 9), **out)

@@ -21,14 +21,19 @@ def tararc_watch(
     watched = {str(r) for r in team} - known - {ctx.agent}
     heard = dict.fromkeys(watched, ctx.tick)
     quiet = span_ticks(silence, ctx.dt)
+    before = len(known)  # `known` only grows: it changed when it grew
 
     def news() -> bool:
         while (m := ctx.receive(message)) is not None:
             if m.sender in heard:
                 heard[m.sender] = ctx.tick
-            known.update(str(r) for r in m.data.get("data", {}).get("lost", []))
-        known.update(r for r, tick in heard.items() if ctx.tick - tick >= quiet)
-        return known != {str(r) for r in lost}
+            said = m.data.get("data", {}).get("lost", [])
+            if said:
+                known.update(map(str, said))
+        due = ctx.tick - quiet
+        if heard and min(heard.values()) <= due:  # someone silent: one look at the clock each tick else
+            known.update(r for r, tick in heard.items() if tick <= due)
+        return len(known) > before
 
     ctx.wait_until(news)
     return Outcome("changed", lost=sorted(known))

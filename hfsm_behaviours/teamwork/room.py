@@ -1,5 +1,6 @@
-"""Primitives of the room-clearing team (machines/clear_room*.yaml): the plan of pairs, a robot's job
-in it, the team's news (robots lost, tables done, dropped tables seen) and where a dropped table is.
+"""Primitives of the room-clearing team (machines/clear_room*.yaml): the plan of pairs, the team's news
+(robots lost, tables done, dropped tables seen) and where a dropped table is. A robot's job in the
+plan is machines/room_assign.yaml's (over `teamwork.recovery`).
 
 Pure of any world: they hear, say and compute with `hfsm_behaviours.room`, so they run in world `none`.
 """
@@ -11,8 +12,9 @@ from typing import Any
 
 from hfsm.primitive import Context, Outcome, primitive
 from hfsm.runtime.program import span_ticks
-from hfsm_behaviours.room.frames import ahead, at_wall, relocalise, to_local, to_room
-from hfsm_behaviours.room.plan import drawn, job_of, make_room_plan, unmanned
+from hfsm_behaviours.room import news as team_news
+from hfsm_behaviours.room.frames import ahead, at_wall, relocalise, to_room
+from hfsm_behaviours.room.plan import make_room_plan
 from hfsm_behaviours.teamwork.plans import coefficients_from
 
 
@@ -24,33 +26,6 @@ def room_allocate(ctx: Context, *, mine: dict[str, Any], heard: dict[str, Any], 
     states = {**heard, ctx.agent: mine}
     plan = make_room_plan(states, tasks, room, coefficients_from(coefficients), reach)
     return Outcome("allocated", plan=plan)
-
-
-@primitive(outcomes=["assigned", "excluded"], outputs=["job", "drawn"])
-def room_assign(ctx: Context, *, plan: dict[str, Any], lost: list[Any], done: list[Any], seen: dict[str, Any],
-                start: dict[str, Any], spent: list[Any] | None = None,
-                sliding: list[Any] | None = None, where: dict[str, Any] | None = None) -> Outcome:
-    """This robot's job after the robots `lost` and the tables `done`, a dropped table where a
-    survivor `seen` it, on a channel no `spent` pairing used, no helper lent to a table a survivor
-    is `sliding` alone; `table` and `toward` in its own start frame (from `start`, where it was told
-    it was placed); `turn`: the tables not yet done that its table waits for (their ways meet,
-    `claims.turns`), but for a table no pair is left for (`unmanned`: it would be waited for until the
-    room's limit). `excluded` when a teammate took this robot for lost. `drawn`: what the monitor
-    draws of this robot's belief (`plan.drawn`: claimed corridors, its table, teammates `where` they
-    last said they stood)."""
-    where = {str(t): [float(v["x"]), float(v["y"])] for t, v in seen.items()}
-    news = ([str(r) for r in lost], [str(t) for t in done], [str(c) for c in spent or []],
-            [str(e) for e in sliding or []])
-    job = job_of(plan, ctx.agent, news[0], news[1], where, news[2], news[3])
-    if job is None:
-        return Outcome("excluded", job={}, drawn={})
-    after = plan["tables"][job["table"]].get("after", []) if job["table"] else []
-    skip = set(news[1]) | set(unmanned(plan, *news))
-    local = {"table_local": to_local(start, job["at"]) if job["at"] else [],
-             "toward_local": to_local(start, job["toward"]) if job["toward"] else [],
-             "turn": [t for t in after if t not in skip]}
-    shown = drawn(plan, job, [str(t) for t in done], where or {})
-    return Outcome("assigned", job={**job, **local}, drawn=shown)
 
 
 @primitive(outcomes=["located"], outputs=["seen"])
@@ -66,54 +41,34 @@ def room_locate(ctx: Context, *, seen: dict[str, Any], table: str, start: dict[s
     return Outcome("located", seen={**seen, table: sight})
 
 
-def _newer(a: dict[str, Any], b: dict[str, Any]) -> bool:
-    return (float(a["t"]), str(a["by"])) > (float(b["t"]), str(b["by"]))
+@primitive(outcomes=["listening"], outputs=["news"])
+def room_news(ctx: Context, *, team: list[Any], lost: list[Any], done: list[Any], seen: dict[str, Any],
+              spent: list[Any] | None = None, sliding: list[Any] | None = None, silence: float = 5.0,
+              where: dict[str, Any] | None = None) -> Outcome:
+    """The news this robot holds as it starts to listen (machines/room_watch.yaml): what the team
+    knows, where each robot last said it stood, every teammate not lost heard now; a teammate
+    silent for `silence` s is lost."""
+    known = {"lost": lost, "done": done, "seen": seen, "spent": spent or [], "sliding": sliding or []}
+    return Outcome("listening", news=team_news.news_of(ctx.agent, team, known, where or {}, ctx.tick,
+                                                  span_ticks(silence, ctx.dt)))
 
 
-@primitive(outcomes=["changed"], outputs=["lost", "done", "seen", "spent", "sliding", "where"])
-def room_watch(ctx: Context, *, team: list[Any], lost: list[Any], done: list[Any], seen: dict[str, Any],
-               spent: list[Any] | None = None, sliding: list[Any] | None = None, silence: float = 5.0,
-               message: str = "room_alive", where: dict[str, Any] | None = None) -> Outcome:
-    """Listen to the team's heartbeats (`message`, said with data {lost, done, seen, spent, sliding})
-    until the team knows more than given: a robot silent for `silence` s or said lost, a table said
-    done, a dropped table seen later, a pairing spent, a table slid alone. Each is a set that only
-    grows (a later sighting replaces an earlier one), so robots that heard the same news, in any
-    order, agree. `where`: where each robot last said it stood (a heartbeat's `pose` from its `start`,
-    room_pulse), in the room's frame: kept, not news."""
-    known_where = {str(r): [float(p[0]), float(p[1])] for r, p in (where or {}).items()}
-    known_lost, known_done = {str(r) for r in lost}, {str(t) for t in done}
-    known_spent = {str(c) for c in spent or []}
-    known_sliding = {str(e) for e in sliding or []}
-    known_seen = {str(t): dict(v) for t, v in seen.items()}
-    watched = {str(r) for r in team} - known_lost - {ctx.agent}
-    heard = dict.fromkeys(watched, ctx.tick)
-    quiet = span_ticks(silence, ctx.dt)
-    given = (set(known_lost), set(known_done), {t: dict(v) for t, v in known_seen.items()}, set(known_spent),
-             set(known_sliding))
+@primitive(outcomes=["heard"], outputs=["news"])
+def room_hear(ctx: Context, *, news: dict[str, Any], sender: str, data: dict[str, Any],
+              pose: dict[str, Any] | None = None, start: dict[str, Any] | None = None) -> Outcome:
+    """A teammate's heartbeat merged into the news: its sender heard now, where it stands (`pose`
+    from its `start`, room frame), its news added (a later sighting replaces an earlier one)."""
+    return Outcome("heard", news=team_news.hear(news, sender, data, pose, start, ctx.tick))
 
-    def news() -> bool:
-        while (m := ctx.receive(message)) is not None:
-            if m.sender in heard:
-                heard[m.sender] = ctx.tick
-            pose, start = m.data.get("pose"), m.data.get("start")
-            if pose and start:
-                known_where[m.sender] = to_room(start, [pose["x"], pose["y"]])
-            data = m.data.get("data", {})
-            known_lost.update(str(r) for r in data.get("lost", []))
-            known_done.update(str(t) for t in data.get("done", []))
-            known_spent.update(str(c) for c in data.get("spent", []))
-            known_sliding.update(str(e) for e in data.get("sliding", []))
-            for table, sight in data.get("seen", {}).items():
-                mine = known_seen.get(str(table))
-                if mine is None or _newer(sight, mine):
-                    known_seen[str(table)] = dict(sight)
-        known_lost.update(r for r, tick in heard.items() if ctx.tick - tick >= quiet)
-        return (known_lost, known_done, known_seen, known_spent, known_sliding) != given
 
-    ctx.wait_until(news)
-    return Outcome("changed", lost=sorted(known_lost), done=sorted(known_done),
-                   seen=dict(sorted(known_seen.items())), spent=sorted(known_spent),
-                   sliding=sorted(known_sliding), where=dict(sorted(known_where.items())))
+@primitive(outcomes=["changed", "same"], outputs=["news", "wake", "lost", "done", "seen", "spent", "sliding",
+                                                  "where"])
+def room_settle(ctx: Context, *, news: dict[str, Any]) -> Outcome:
+    """The teammates silent for `silence` s added to the lost; `changed` when the team knows more
+    than it was given. `wake`: seconds until the next teammate would fall silent."""
+    new, changed = team_news.settle(news, ctx.tick)
+    wake = round(team_news.wake(new, ctx.tick) * ctx.dt, 9)
+    return Outcome("changed" if changed else "same", news=new, wake=wake, **team_news.told(new))
 
 
 @primitive(outcomes=["relocalised", "kept"], outputs=["start"])

@@ -180,3 +180,26 @@ def test_the_room_view_draws_claimed_corridors_beliefs_and_what_each_robot_sense
         assert not (believed[2] > 150 and believed[1] > 130)
     finally:
         server.stop()
+
+
+def test_a_status_kept_last_shows_once_in_the_mailbox_and_every_copy_as_received(page: Any, tmp_path: Path) -> None:
+    talk = tmp_path / "talk.yaml"
+    talk.write_text(
+        "vars: {n: 0}\noutcomes: [done]\nstates:\n  who:\n    choose:\n      - {if: \"agent.id == 'a'\", then: say}\n"
+        "      - {else: rest}\n  say:\n    do: send\n    with: {message: status, to: b, keep: last, data: {n: '${vars.n}'}}\n"
+        "    on: {sent: count}\n  count:\n    do: set\n    with: {n: '${vars.n + 1}'}\n    on: {done: more}\n"
+        "  more:\n    choose:\n      - {if: 'vars.n < 3', then: pause}\n      - {else: done}\n"
+        "  pause:\n    do: wait\n    with: {seconds: 0.05}\n    on: {done: say}\n"
+        "  rest:\n    do: wait\n    with: {seconds: 1}\n    on: {done: done}\n")
+    trace = tmp_path / "talk.jsonl"
+    assert run_main([str(talk), "--agents", "a,b", "--trace", str(trace), "--quiet"]) == 0
+    server = Server(Hub(read_trace(trace)), drawings(talk, []), trace.name)
+    server.start()
+    try:
+        _open(page, server.url)
+        page.evaluate("window.hfsm.seek(0.5)")
+        assert page.inner_text('.agent[data-agent="b"] .mailbox') == "mailbox: status from a"
+        fates = page.evaluate("window.hfsm.replay.fates().map(m => m.got.b)")
+        assert fates == [0.05, 0.1, 0.15]
+    finally:
+        server.stop()

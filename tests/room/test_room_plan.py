@@ -12,15 +12,8 @@ from hypothesis import strategies as st
 
 from hfsm_behaviours.room.claims import Rect, claim_walls, overlap
 from hfsm_behaviours.room.frames import at_wall, difficulty_of, relocalise, to_local, to_room
-from hfsm_behaviours.room.plan import (
-    drawn,
-    groups_after,
-    job_of,
-    make_room_plan,
-    slide_of,
-    sliding_partners,
-    tables_of,
-)
+from hfsm_behaviours.room.plan import drawn, make_room_plan, tables_of
+from hfsm_behaviours.room.recovery import groups_after, job_of, slide_of, sliding_partners
 
 ROOM = {"width": 7.0, "depth": 5.0}
 TASKS = [

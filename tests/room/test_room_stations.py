@@ -7,7 +7,8 @@ import math
 from hypothesis import given
 from hypothesis import strategies as st
 
-from hfsm_behaviours.room.plan import job_of, make_room_plan
+from hfsm_behaviours.room.plan import make_room_plan
+from hfsm_behaviours.room.recovery import job_of
 from hfsm_behaviours.room.stations import room_ties, stations
 from hfsm_behaviours.tararc.grouping import Group, Robot
 from hfsm_behaviours.tararc.help import lend

@@ -1,9 +1,20 @@
 """TARARC steps 2-5: grouping, election, leftovers and competition on small teams."""
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from hfsm_behaviours.tararc.allocation import Task, compete
-from hfsm_behaviours.tararc.grouping import Group, Robot, elect, form_groups, greedy_groups, group_size, pair
+from hfsm_behaviours.tararc.grouping import (
+    Group,
+    Robot,
+    elect,
+    form_groups,
+    greedy_groups,
+    group_size,
+    pair,
+    row_sum,
+)
 
 
 def rel(**pairs: float) -> dict[tuple[str, str], float]:
@@ -92,3 +103,31 @@ def test_competition_uses_belief_at_the_task_difficulty() -> None:
     hard = Task("t", 1, 0, 0.9, 1)
     # a is better at hard tasks: F(a) = 0.1 + d, F(b) = 0.5: at d = 0.9, 1.0 > 0.5
     assert compete([hard], agents, lambda ag, d: 0.1 + d if ag == "a" else 0.5) == [("t", "a")]
+
+
+def _greedy_by_row_sums(ids: list[str], n_groups: int, rel: dict[tuple[str, str], float]) -> tuple[list[tuple[str, ...]], list[str]]:
+    """Step 2 as written first: every seed key a row sum over the whole pool (the reference)."""
+    pool = sorted(set(ids))
+    n, _ = group_size(len(pool), n_groups)
+    groups: list[tuple[str, ...]] = []
+    for _ in range(n_groups):
+        seed = min(pool, key=lambda r: (-row_sum(r, pool, rel), 0.0, r))
+        rest = [r for r in pool if r != seed]
+        partners = sorted(rest, key=lambda r: (-rel.get(pair(seed, r), 0.0), (), r))[: n - 1]
+        groups.append((seed, *partners))
+        pool = [r for r in pool if r not in {seed, *partners}]
+    return groups, pool
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(2, 12).flatmap(lambda n: st.tuples(
+    st.just(n), st.integers(1, n),
+    st.dictionaries(st.tuples(st.integers(0, n - 1), st.integers(0, n - 1)),
+                    st.sampled_from([0.0, -0.0, 1e-300, 0.1, 0.2, 0.3, 1e16, -1.0, 2.5]), max_size=40))))
+def test_greedy_groups_are_those_of_the_row_sums_over_the_whole_pool(
+    case: tuple[int, int, dict[tuple[int, int], float]],
+) -> None:
+    n, n_groups, raw = case
+    rel = {(f"r{a}", f"r{b}"): v for (a, b), v in raw.items()}  # also keys `pair` never makes
+    ids = [f"r{i}" for i in range(n)]
+    assert greedy_groups(ids, n_groups, rel) == _greedy_by_row_sums(ids, n_groups, rel)

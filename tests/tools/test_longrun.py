@@ -22,6 +22,7 @@ from tools.longrun import (  # noqa: E402
     check_trace,
     growth,
     measure,
+    slope,
 )
 
 
@@ -57,6 +58,14 @@ def test_progress_lines_are_read_as_simulated_seconds() -> None:
 def test_growth_is_from_the_second_sample_to_the_last() -> None:
     samples = [Sample(60.0 * i, 10.0 * i, mb) for i, mb in enumerate([100.0, 140.0, 141.5, 140.5])]
     assert growth(samples) == 0.5
+
+
+def test_the_slope_is_a_least_squares_fit_from_the_second_sample_per_simulated_minute() -> None:
+    flat = [Sample(60.0 * i, 10.0 * i, mb) for i, mb in enumerate([100.0, 140.0, 141.0, 140.0, 141.0])]
+    assert slope(flat) == pytest.approx(0.2)
+    rising = [Sample(30.0 * i, 10.0 * i, 100.0 + 7.5 * i) for i in range(6)]  # 15 MB a minute
+    assert slope(rising) == pytest.approx(15.0)
+    assert slope(rising[:2]) is None
 
 
 @pytest.mark.slow

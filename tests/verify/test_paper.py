@@ -21,6 +21,8 @@ PAPER = [
     ("synchronised_lift_table", [*PAIR, *ROLES, "--param", "patience=5", "--loss", "1"]),
     ("step_together", [*PAIR, "--param", "direction=left", "--param", "cycle=1", "--param", "steps=1",
                        "--param", "split=1", "--param", "limit=3", "--values", "HOLDING"]),
+    ("tararc_exchange", [*PAIR, "--param", "message=s", "--param", "team=[r1,r2]", "--param", "limit=0.2",
+                         "--loss", "1"]),
 ]  # fmt: skip
 
 
@@ -60,9 +62,10 @@ def test_a_stand_in_that_fails_is_a_failure_outcome_with_goal_success(
 def test_a_stand_in_outputs_what_its_saving_var_holds_at_first(
     capsys: pytest.CaptureFixture[str], tmp_path: Path
 ) -> None:
-    """TARARC's exchange is a Python primitive, so a stand-in: its `talking` is saved into a list var,
-    so the stand-in says [] (not 0, which `len(vars.talking)` would refuse as an error)."""
+    """TARARC's exchange stood in (`--stand-in`; its own machine is verified below): its `talking` is
+    saved into a list var, so the stand-in says [] (not 0, which `len(vars.talking)` would refuse)."""
     args = ["--agents", "r1,r2", "--param", "message=s", "--param", "barrier=close", "--param", "limit=10"]
+    args += ["--stand-in", "tararc_exchange"]
     args += ["--agent-param", "r1:team=[r2]", "--agent-param", "r2:team=[r1]", "--loss", "1", "--fail", "1"]
     code, verdict = verify(capsys, MACHINES / "tararc_share.yaml", *args, out=tmp_path / "ce.jsonl")
     assert (code, verdict["verdict"], verdict["exhausted"]) == (0, "ok", True), verdict["stderr"]

@@ -85,9 +85,13 @@ class Replay {
       case "send":
         this.sentNames.add(r.message);
         break;
-      case "receive":
-        a.mailbox.push({ message: r.message, sender: r.sender, t: r.t, data: r.data });
+      case "receive": {
+        // keep: last - in place of the sender's copy not yet taken; `id`: its send record's number
+        const old = r.replaced ? a.mailbox.findIndex(m => m.message === r.message && m.sender === r.sender) : -1;
+        if (old >= 0) a.mailbox.splice(old, 1);
+        a.mailbox.push({ message: r.message, sender: r.sender, t: r.t, id: r.id });
         break;
+      }
       case "failed":
         a.failed = r.reason || "failed";
         if (a.active.size) a.final = a.before || new Map(a.active);
@@ -112,10 +116,10 @@ class Replay {
 
   // Every message of the whole trace with when each addressee got it (null: never), whatever the
   // time shown: so a message still in flight is told apart from one the radio lost.
-  // Kept up as records come: a receive is matched to the oldest send of that message from that
-  // sender still awaited by that agent.
+  // Kept up as records come: a receive is matched to its send by the send's `id`, or (a trace
+  // without ids) to the oldest send of that message from that sender still awaited by that agent.
   fates() {
-    if (!this._fates) { this._fates = []; this._fatesOf = 0; this._awaited = new Map(); }
+    if (!this._fates) { this._fates = []; this._fatesOf = 0; this._awaited = new Map(); this._byId = new Map(); }
     const names = this.agentNames();
     for (; this._fatesOf < this.records.length; this._fatesOf += 1) {
       const r = this.records[this._fatesOf];
@@ -123,11 +127,15 @@ class Replay {
         const to = r.to === "others" ? names.filter(n => n !== r.agent) : r.to === "all" ? names : [r.to];
         const m = { t: r.t, from: r.agent, message: r.message, got: Object.fromEntries(to.map(n => [n, null])) };
         this._fates.push(m);
+        if (r.id !== undefined) { this._byId.set(r.id, m); continue; }
         for (const n of to) {
           const key = JSON.stringify([r.agent, r.message, n]);
           if (!this._awaited.has(key)) this._awaited.set(key, []);
           this._awaited.get(key).push(m);
         }
+      } else if (r.kind === "receive" && r.id !== undefined) {
+        const m = this._byId.get(r.id);
+        if (m && r.agent in m.got) m.got[r.agent] = r.t;
       } else if (r.kind === "receive") {
         const waiting = this._awaited.get(JSON.stringify([r.sender, r.message, r.agent]));
         if (waiting && waiting.length) waiting.shift().got[r.agent] = r.t;

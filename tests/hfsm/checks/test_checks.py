@@ -102,6 +102,16 @@ def test_error(machine: Machine, body: str, code: str) -> None:
     assert code in codes(machine("m", body))
 
 
+def test_a_value_a_param_does_not_take_is_refused_with_a_did_you_mean(machine: Machine) -> None:
+    body = "outcomes: [done]\nstates:\n  a: {do: send, with: {message: hi, keep: %s}, on: {sent: done}}\n"
+    assert findings(machine("m", body % "lats")) == [
+        "3:43 E332 param 'keep' of 'send' takes 'all' or 'last', not 'lats'; did you mean 'last'?"
+    ]
+    assert findings(machine("n", body % "3")) == ["3:43 E306 param 'keep' of 'send' takes str, not int 3"]
+    for fine in ("last", "all", "'${params.k}'"):
+        assert findings(machine("o", "params: {k: {type: str, default: last}}\n" + body % fine)) == []
+
+
 def test_good_machine_has_no_findings(machine: Machine) -> None:
     assert findings(machine("m", GOOD)) == []
 

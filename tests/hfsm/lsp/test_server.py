@@ -155,6 +155,15 @@ async def test_completion_offers_what_fits_where_the_cursor_is(client: LanguageC
 
 
 @pytest.mark.asyncio(loop_scope="module")
+async def test_completion_offers_a_params_values_when_it_takes_a_fixed_set(client: LanguageClient) -> None:
+    path = DATA / "sender.yaml"
+    await open_file(client, path)
+    assert "keep" in await _labels(client, path, 5, len("    with: {"))
+    assert await _labels(client, path, 5, len("    with: {message: hello, keep: ")) == ["all", "last"]
+    assert await _labels(client, path, 5, len("    with: {message: ")) == []
+
+
+@pytest.mark.asyncio(loop_scope="module")
 async def test_definition_goes_to_a_state_a_machine_and_a_primitive(client: LanguageClient) -> None:
     path = DATA / "caller.yaml"
     await open_file(client, path)

@@ -148,8 +148,10 @@ def test_message_arrives_next_tick_and_preempts_the_callee(machine: Machine) -> 
     result, records = execute(machine("m", PING), agents=["a", "b"])
     assert result.agents["b"].outcome == "got"
     assert result.agents["b"].time == 0.05
+    (send,) = kinds(records, "send")
     (receive,) = kinds(records, "receive")
-    assert (receive["agent"], receive["t"], receive["sender"], receive["data"]) == ("b", 0.05, "a", {"n": 1})
+    assert (receive["agent"], receive["t"], receive["sender"], receive["id"]) == ("b", 0.05, "a", send["id"])
+    assert send["data"] == {"n": 1} and "data" not in receive
 
 
 def test_early_message_takes_the_arc_at_entry_without_evaluating_with(machine: Machine) -> None:

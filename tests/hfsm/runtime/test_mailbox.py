@@ -27,6 +27,7 @@ def _walk(messages: list[Message], names: tuple[str, ...], prefix: str) -> int |
 OPS = st.lists(
     st.one_of(
         st.tuples(st.just("append"), NAMES, st.integers(0, 9)),
+        st.tuples(st.just("replace"), NAMES, st.sampled_from(["x", "z"])),
         st.tuples(st.just("take"), st.lists(st.sampled_from(["a", "b", ""]), max_size=3), st.sampled_from(["", "s/", "t/"])),
         st.tuples(st.just("insert"), NAMES, st.integers(0, 12)),
         st.tuples(st.just("delete"), st.integers(0, 12)),
@@ -38,13 +39,19 @@ OPS = st.lists(
 
 @given(OPS)
 def test_counts_follow_the_list_and_take_is_the_walk(ops: list[tuple[object, ...]]) -> None:
-    box, plain = Mailbox(), []
+    box, plain = Mailbox(), list[Message]()
     for op in ops:
         kind = op[0]
         if kind == "append":
             message = Message(str(op[1]), "x", "y", {"n": op[2]}, 0)
             box.append(message)
             plain.append(message)
+        elif kind == "replace":  # keep: last
+            message = Message(str(op[1]), str(op[2]), "y", {}, 0, "last")
+            replaced = box.replace(message)
+            kept = [m for m in plain if m.name != message.name or m.sender != message.sender]
+            assert replaced == (len(kept) < len(plain))
+            plain = [*kept, message]
         elif kind == "insert":
             message = Message(str(op[1]), "x", "y", {}, 0)
             box.insert(int(op[2]), message)  # type: ignore[call-overload]
@@ -66,6 +73,10 @@ def test_counts_follow_the_list_and_take_is_the_walk(ops: list[tuple[object, ...
         for message in plain:
             counts[message.name] = counts.get(message.name, 0) + 1
         assert box.counts == counts
+        pairs: dict[tuple[str, str], int] = {}
+        for message in plain:
+            pairs[message.name, message.sender] = pairs.get((message.name, message.sender), 0) + 1
+        assert box.pairs == pairs
 
 
 def test_a_mailbox_made_from_messages_counts_them() -> None:
