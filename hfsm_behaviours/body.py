@@ -12,11 +12,8 @@ import math
 import numpy as np
 
 from hfsm.primitive import Context
-from hfsm.runtime.program import span_ticks
 from hfsm_sim import CameraModel, Robot
 from hfsm_sim.profile import MotionProfile
-
-PATIENCE = 20.0  # seconds a move may be held stopped by the safety guard before it ends short
 
 
 class Body:
@@ -30,16 +27,7 @@ class Body:
             return
         self.robot.set_velocity(forward, sideways, turn)
         try:
-            guard = getattr(self.robot, "guard", None)
-            if guard is None:
-                self.ctx.wait(seconds)
-                return
-            # Held back by the safety guard (hfsm_behaviours.drive.guard), the move lasts longer, so
-            # that it still covers its span; held stopped for PATIENCE s, it ends short.
-            owed = float(span_ticks(seconds, self.ctx.dt))
-            while owed > 1e-9 and guard.held < PATIENCE:
-                self.ctx.wait()
-                owed -= guard.passed
+            self.ctx.wait(seconds)
         finally:
             self.robot.stop()
 

@@ -18,11 +18,10 @@ from hfsm.primitive import Message
 from hfsm.runtime.program import span_ticks
 from hfsm.world import InputSpec
 from hfsm.yamlio import read_mapping
-from hfsm_behaviours.drive.guard import Guarded
 from hfsm_behaviours.drive.localise import FRAMED_EVERY, SCAN_EVERY, Framed, Localised
 from hfsm_behaviours.inputs import SIM_INPUTS
 from hfsm_behaviours.senses import Senses
-from hfsm_sim import Robot, Scenario, World, resolve
+from hfsm_sim import Scenario, World, resolve
 from hfsm_sim.light import LightRobot
 from hfsm_sim.recorder import Recorder
 from hfsm_sim.team import AnyRobot
@@ -43,7 +42,6 @@ def load_scenario(name_or_path: str) -> tuple[Scenario, str]:
 
 
 POSE_EVERY = 0.5  # seconds between the poses the trace gets
-GUARDED = True  # every humanoid's motion passes its safety guard (off only to measure what it prevents)
 
 
 class Labels:
@@ -102,9 +100,6 @@ class SimWorld:
                            if isinstance(robot, LightRobot)}
         self._framed = {name: Framed(robot) for name, robot in world.robots.items()
                         if not isinstance(robot, LightRobot)}
-        # Every humanoid's motion passes its range finder's safety guard, whatever drives it.
-        self._guarded = {name: Guarded(framed) for name, framed in self._framed.items()
-                         if isinstance(world.robots[name], Robot) and GUARDED}
 
     @property
     def outputs(self) -> list[Path]:
@@ -125,9 +120,8 @@ class SimWorld:
         if self._recorder is not None:
             self.world.record(self._recorder)
 
-    def handle(self, agent: str) -> AnyRobot | Localised | Framed | Guarded:
-        return (self._localised.get(agent) or self._guarded.get(agent) or self._framed.get(agent)
-                or self.world.robots[agent])
+    def handle(self, agent: str) -> AnyRobot | Localised | Framed:
+        return self._localised.get(agent) or self._framed.get(agent) or self.world.robots[agent]
 
     def inputs(self) -> Mapping[str, InputSpec]:
         return SIM_INPUTS
@@ -141,9 +135,7 @@ class SimWorld:
             scenario = self.world.scenario
             told = {"start": scenario.told_start(agent),
                     "room": {"width": scenario.room.width, "depth": scenario.room.depth}}
-            # what it reads: the body, not the guard
-            sensing = self._localised.get(agent) or self._framed.get(agent) or self.world.robots[agent]
-            senses = self._senses[agent] = Senses(sensing, own, scenario.tasks(), told)
+            senses = self._senses[agent] = Senses(self.handle(agent), own, scenario.tasks(), told)
         return senses.read(name, tick)
 
     def post(self, message: Message) -> None:
@@ -159,8 +151,6 @@ class SimWorld:
         return None
 
     def advance(self, tick: int) -> None:
-        for guarded in self._guarded.values():
-            guarded.update(self.world.time, self.dt)
         # To the exact time of the next tick, so that a dt that is not a whole number of physics
         # steps does not drift: the world rounds the end of each span to a physics step.
         self.world.advance((tick + 1) * self.dt - self.world.time)

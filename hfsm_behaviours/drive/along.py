@@ -8,7 +8,7 @@ from typing import Any
 
 from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.approach.frames import wrap
-from hfsm_behaviours.drive.avoid import Detour, Sensing, tops_near
+from hfsm_behaviours.drive.avoid import Detour, Sensing
 from hfsm_behaviours.drive.goto import body_velocity, heading
 from hfsm_behaviours.drive.localise import Framed
 
@@ -18,7 +18,7 @@ FACED = 0.1  # radians: facing the point
 @primitive(outcomes=["arrived", "timeout"], outputs=["x", "y"], world="sim")
 def go_along(ctx: Context, *, points: list[Any], tolerance: float = 0.3, last: float = 0.15,
              speed: float = 0.0, face: list[Any] | None = None, look: float = 0.0,
-             clearance: float = 0.45, tops: list[Any] | None = None, timeout: float = 120.0) -> Outcome:
+             clearance: float = 0.45, timeout: float = 120.0) -> Outcome:
     """Drive through `points` ([x, y] of the odometry frame) in order at `speed` m/s (0: the body's
     top speed): on to the next within `tolerance` m of one, `arrived` within `last` m of the last,
     then turned on the spot to `face` that point ([x, y], if given). With `look` > 0 it keeps
@@ -42,8 +42,6 @@ def go_along(ctx: Context, *, points: list[Any], tolerance: float = 0.3, last: f
                     return Outcome("timeout", x=round(here[0], 6), y=round(here[1], 6))
                 velocity = heading(here, goal, pace, [], 0.0)
                 seen = sensing.seen(ctx.time, here)
-                if look > 0.0 and tops:
-                    seen = seen + tops_near(here, tops, look)
                 if seen:
                     left = math.hypot(goal[0] - here[0], goal[1] - here[1])
                     velocity = way_out.steer(ctx.time, velocity, seen, clearance, pace, left)

@@ -172,27 +172,3 @@ class Sensing:
             self._at = now
             self._kept = [(here[0] + x, here[1] + y) for x, y in sensed(self.robot, self.look, here[2])]
         return [(x - here[0], y - here[1]) for x, y in self._kept]
-
-
-def tops_near(here: tuple[float, float, float], tops: list[Any], look: float) -> list[Point]:
-    """The nearest point of each table top in `tops` ([x, y, yaw radians, length, width] of the
-    odometry frame: where the team believes the tables stand) within `look` metres, relative to the
-    robot (room frame), as things sensed: the range finder sweeps over a table standing on the floor,
-    so a walk turned aside by what it senses keeps off the tables it knows of instead of pushing them."""
-    out = []
-    for top in tops:
-        cx, cy, yaw, length, width = (float(v) for v in top[:5])
-        c, s = math.cos(yaw), math.sin(yaw)
-        dx, dy = here[0] - cx, here[1] - cy
-        along, across = c * dx + s * dy, -s * dx + c * dy
-        a = max(-length / 2, min(length / 2, along))
-        b = max(-width / 2, min(width / 2, across))
-        if (a, b) == (along, across):  # inside the top (a belief off by a little): its nearest edge
-            if length / 2 - abs(along) < width / 2 - abs(across):
-                a = math.copysign(length / 2, along)
-            else:
-                b = math.copysign(width / 2, across)
-        px, py = cx + c * a - s * b, cy + s * a + c * b
-        if math.hypot(px - here[0], py - here[1]) < look:
-            out.append((px - here[0], py - here[1]))
-    return out

@@ -2,9 +2,8 @@
 (neighbouring beams whose end points lie close together), each segment into straight pieces
 (Douglas-Peucker); a straight piece longer than THING is a wall, every other piece is a thing (a
 robot's side, robots standing close together, a lifted table's legs), told by its nearest point.
-Walls are left to the planned way, which keeps off them; a short piece lying on the line of a wall
-(a stretch of it seen between two robots, or cut short at the edge of the range) is wall too. A
-table standing on the floor is below the beams (hfsm_sim.robot.SCAN_HEIGHT)."""
+Walls are left to the planned way, which keeps off them; a table standing on the floor is below the
+beams (hfsm_sim.robot.SCAN_HEIGHT)."""
 
 from __future__ import annotations
 
@@ -15,7 +14,6 @@ BEAMS = 90  # 4 degrees apart: a robot 1.2 m away takes two beams or more
 JOIN = 0.2  # metres between neighbouring end points of one segment
 STRAIGHT = 0.04  # metres off the line through a piece's ends that its points may lie
 THING = 0.7  # metres: a straight piece longer end to end is a wall (two robots' sides are 0.56)
-ON_WALL = 0.05  # metres: a short piece whose ends lie this near a wall's line is part of it
 
 
 def things(ranges: list[float], look: float) -> list[Point]:
@@ -26,21 +24,10 @@ def things(ranges: list[float], look: float) -> list[Point]:
     ends: list[Point | None] = [
         (r * math.cos(2 * math.pi * k / n), r * math.sin(2 * math.pi * k / n)) if r < look else None
         for k, r in enumerate(ranges)]
-    pieces = [piece for segment in _segments(ends) for piece in _pieces(segment)]
-    walls = [(piece[0], piece[-1]) for piece in pieces if math.dist(piece[0], piece[-1]) > THING]
-    found = [min(piece, key=lambda q: math.hypot(*q)) for piece in pieces
-             if math.dist(piece[0], piece[-1]) <= THING and not _on_a_wall(piece, walls)]
+    found = [min(piece, key=lambda q: math.hypot(*q))
+             for segment in _segments(ends) for piece in _pieces(segment)
+             if math.dist(piece[0], piece[-1]) <= THING]
     return sorted(found, key=lambda q: math.hypot(*q))
-
-
-def _on_a_wall(piece: list[Point], walls: list[tuple[Point, Point]]) -> bool:
-    """Both ends of `piece` lie within ON_WALL of the line through one wall piece."""
-    for (ax, ay), (bx, by) in walls:
-        length = math.hypot(bx - ax, by - ay)
-        if all(abs((bx - ax) * (ay - qy) - (ax - qx) * (by - ay)) / length <= ON_WALL
-               for qx, qy in (piece[0], piece[-1])):
-            return True
-    return False
 
 
 def _segments(ends: list[Point | None]) -> list[list[Point]]:

@@ -1,8 +1,7 @@
 """Robots really crossing in the simulator, each walking with its range finder (go_along's `look`):
 head-on, at right angles, past a pair standing at its table, round a robot failed in its way, and a crowd of nine parked 0.8 m apart
 in a corner turning round it. The scorer counts robot-robot contacts: none, and every walker gets
-where it was going. Blind (`look` 0), the safety guard under every motion still stops them short of
-each other; blind and unguarded, the same walks touch."""
+where it was going. Blind (`look` 0), the same walks touch."""
 
 from __future__ import annotations
 
@@ -12,8 +11,6 @@ from typing import Any
 
 import pytest
 from helpers import hfsm_run
-
-from hfsm_behaviours import simworld
 
 DATA = Path(__file__).parent / "data" / "crossing"
 CROWD = ("ahead=[-3.0, 6.0]", "mirror=[-1.0, -1.0]", "cross=[-2.0, 2.0]")  # the grid turned a quarter
@@ -51,15 +48,5 @@ def test_walkers_that_sense_each_other_never_touch(capsys: pytest.CaptureFixture
 
 @pytest.mark.slow
 @pytest.mark.parametrize("scenario", ["head_on", "corner_crowd"])
-def test_blind_and_unguarded_the_same_walks_touch(capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch,
-                                                  scenario: str) -> None:
-    """Without the range finder's look and without the safety guard under every motion
-    (hfsm_behaviours/drive/guard.py, `simworld.GUARDED`)."""
-    monkeypatch.setattr(simworld, "GUARDED", False)
+def test_blind_the_same_walks_touch(capsys: pytest.CaptureFixture[str], scenario: str) -> None:
     assert walk(capsys, scenario, CASES[scenario], 0.0)["score"]["robot_collisions"] > 0
-
-
-@pytest.mark.slow
-def test_blind_walkers_meeting_head_on_are_stopped_by_the_guard(capsys: pytest.CaptureFixture[str]) -> None:
-    """Blind (`look` 0), nothing steers them round each other: the guard stops both short of touching."""
-    assert walk(capsys, "head_on", CASES["head_on"], 0.0)["score"]["robot_collisions"] == 0
