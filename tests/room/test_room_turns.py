@@ -49,3 +49,17 @@ def test_no_two_pairs_ever_wait_for_each_other(spots: list[tuple[float, float, i
         order += sorted(ready)
         for t in ready:
             del left[t]
+
+
+def test_a_way_meeting_its_wall_grazing_is_carried_the_other_way() -> None:
+    """Development room walls-902: table2 at 21 degrees, 1.55 m from the north wall, was carried to it
+    (its nearer wall along its axis, 69 degrees from square on) and slid along it into the corner; the
+    other way meets the west wall 21 degrees from square on, and is taken though it is longer."""
+    tables = [{"id": "table1", "x": 5.44, "y": -2.3, "yaw": 82.0, "length": 0.86, "width": 0.47},
+              {"id": "table2", "x": -0.41, "y": 1.75, "yaw": 21.0, "length": 1.0, "width": 0.57}]
+    north = way(tables[1], 1, 13.8, 6.6, 0.5)
+    west = way(tables[1], -1, 13.8, 6.6, 0.5)
+    assert north.grazing and not west.grazing and north.travel < west.travel
+    claims = claim_walls(tables, 13.8, 6.6)
+    assert claims["table2"].sign == -1 and claims["table2"].toward[0] == -6.9
+    assert claims["table1"].sign == -1  # 8 degrees from square on: kept the shorter way
