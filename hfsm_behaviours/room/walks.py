@@ -39,6 +39,7 @@ KEEP = 0.8  # metres from a walker's centre to a robot standing still, at least
 CORRIDOR = 4.0  # a metre walked in a claimed corridor costs this many
 GAP = 1.2  # metres from a table's centre line to a robot's place beside it
 HALF = 0.45  # half the width of the strip a walker sweeps
+WALL = 0.35  # metres from a wall within which no robot stands
 HEAD = 2.0  # metres of its way a walker about to set off keeps clear of an earlier walker's
 
 
@@ -89,14 +90,21 @@ def places(table: Mapping[str, Any], at: Point, gap: float = GAP) -> list[Point]
 
 
 def place_for(table: Mapping[str, Any], at: Point, me: Point, others: Sequence[Point],
-              gap: float = GAP, partner: Point | None = None, leads: bool = True) -> Point:
+              gap: float = GAP, partner: Point | None = None, leads: bool = True,
+              room: tuple[float, float] | None = None) -> Point:
     """Of the two places beside the table, the one with fewer robots within `KEEP` m of it (a failed
     robot stands at the other), then the nearer one to `me`. With a `partner` (where it said it
     stands), the pair takes one place each, the way that puts both nearer their places (a partner
     standing at one keeps it); when both ways are as near, the pair's leader (`leads`: this robot,
     else the partner) takes the place the rule above gives it and the other robot the other place:
-    two robots walking to one table never head for the same side."""
+    two robots walking to one table never head for the same side. A place no robot can stand at
+    (within `WALL` m of a wall of the `room`, {width, depth} centred on the origin, or beyond it) is
+    not taken while the other is: both robots then head for the other side."""
     sides = places(table, at, gap)
+    if room is not None:
+        free = [p for p in sides if standable(p, room)]
+        if len(free) == 1:
+            return free[0]
 
     def key(p: Point, who: Point) -> tuple[int, float]:
         return (sum(math.dist(p, o) < KEEP for o in others if o != partner), math.dist(p, who))
@@ -110,6 +118,11 @@ def place_for(table: Mapping[str, Any], at: Point, me: Point, others: Sequence[P
     if leads:
         return theirs
     return sides[1] if theirs == sides[0] else sides[0]
+
+
+def standable(p: Point, room: tuple[float, float], wall: float = WALL) -> bool:
+    """Whether a robot can stand at `p` in a room of (width, depth) centred on the origin."""
+    return abs(p[0]) <= room[0] / 2 - wall and abs(p[1]) <= room[1] / 2 - wall
 
 
 def _node(p: Point, scene: Scene) -> tuple[int, int]:

@@ -64,7 +64,8 @@ def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
     said.update({str(r): (float(p[0]), float(p[1])) for r, p in (where or {}).items()})
     others = [p for r, p in sorted(said.items()) if r != ctx.agent]
     mate = said.get(str(job.get("partner", "")))
-    goal = place_for(table, at, me, others, partner=mate, leads=job.get("role") != "assistant")
+    size = (float(room["width"]), float(room["depth"])) if room else None
+    goal = place_for(table, at, me, others, partner=mate, leads=job.get("role") != "assistant", room=size)
     if math.dist(me, goal) <= near:
         return Outcome("here", path=[], walk=[], face=to_local(start, at), length=0.0, standing={})
     # the table walked to is not in the way of its own place

@@ -22,6 +22,7 @@ from hfsm_behaviours.room.walks import (
     places,
     plan_walk,
     shorten,
+    standable,
 )
 
 TABLE = {"id": "table1", "x": 0.0, "y": 0.0, "yaw": 0, "length": 0.8, "width": 0.5, "toward": [3.5, 0.0]}
@@ -150,3 +151,17 @@ def test_shortening_keeps_a_clear_way() -> None:
     scene = Scene(7.0, 5.0, (Rect(0.0, 0.0, 1.0, 0.0, 0.4, 0.25),))
     assert shorten([(-2.0, 0.0), (-1.0, 1.0), (0.0, 1.0), (1.0, 1.0), (2.0, 0.0)], scene) == \
         [(-2.0, 0.0), (-1.0, 1.0), (1.0, 1.0), (2.0, 0.0)]
+
+
+def test_a_place_beyond_a_wall_is_not_taken_both_robots_head_for_the_other_side() -> None:
+    # generated room open-537: a table 0.42 m from a wall along its long side; its far place is
+    # outside the room, and the pair's one-side-each rule sent one robot walking there for ever
+    table = {"yaw": 170.0}
+    at, room = (0.48, 1.25), (8.7, 4.2)
+    near = place_for(table, at, (0.0, 0.0), [])
+    assert standable(near, room) and not standable(places(table, at)[1], room)
+    for leads in (True, False):
+        me, mate = ((-2.8, -0.47), (-0.49, -1.26)) if leads else ((-0.49, -1.26), (-2.8, -0.47))
+        assert place_for(table, at, me, [mate], partner=mate, leads=leads, room=room) == near
+    middle = place_for(table, (0.0, 0.0), (0.0, -3.0), [])  # both places free: the rule as before
+    assert place_for(table, (0.0, 0.0), (0.0, -3.0), [], room=room) == middle
