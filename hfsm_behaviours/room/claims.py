@@ -17,6 +17,7 @@ from typing import Any
 
 Point = tuple[float, float]
 GRAZING = 50.0  # degrees from square on beyond which a way is carried only when no other is free
+BESIDE = 0.5  # metres round a table at its wall where its pair stands: two such closer meet
 
 
 @dataclass(frozen=True)
@@ -118,19 +119,37 @@ def crossings(ways: Sequence[Way], tables: Sequence[Mapping[str, Any]], reach: f
     return count
 
 
+def ends(w: Way, table: Mapping[str, Any], beside: float = BESIDE) -> Rect:
+    """Where the table stands once its way is carried (its top grown by `beside`, its pair's room)."""
+    yaw = math.radians(float(table.get("yaw", 0.0)))
+    x, y = float(table["x"]) + w.sign * w.travel * math.cos(yaw), float(table["y"]) + w.sign * w.travel * math.sin(yaw)
+    return footprint(table, beside, (x, y))
+
+
+def side_by_side(ways: Sequence[Way], tables: Sequence[Mapping[str, Any]], beside: float = BESIDE) -> int:
+    """Pairs of tables that end at their walls closer than 2 x `beside` m: their pairs would land
+    them back to back, and the leader looking along its table's edge would take the other table's
+    end for its own (test_room_turns_sim: two tables 0.8 m apart carried to one wall side by side,
+    the second pair squaring up for ever at the first table's end)."""
+    by_id = {str(t["id"]): t for t in tables}
+    spots = [ends(w, by_id[w.table], beside) for w in ways]
+    return sum(overlap(a, b) for a, b in itertools.combinations(spots, 2))
+
+
 def claim_walls(tables: Sequence[Mapping[str, Any]], width: float, depth: float,
                 reach: float = 0.5) -> dict[str, Way]:
     """Every table's way to a wall: the choice with the fewest crossings, then the fewest ways meeting
     their wall grazing (`Way.grazing`: a table at 21 degrees carried to a wall along it slid along
-    the wall, development room walls-902), then the least travel, then the first in table order (+1
-    before -1). Up to 2^K choices: K is at most 6 here."""
+    the wall, development room walls-902), then the fewest tables ending side by side
+    (`side_by_side`), then the least travel, then the first in table order (+1 before -1). Up to 2^K
+    choices: K is at most 6 here."""
     ordered = sorted(tables, key=lambda t: str(t["id"]))
     if not ordered:
         return {}
     options = [[way(t, s, width, depth, reach) for s in (1, -1)] for t in ordered]
     best = min(itertools.product(*options),
                key=lambda ws: (crossings(ws, ordered, reach), sum(w.grazing for w in ws),
-                               round(sum(w.travel for w in ws), 6)))
+                               side_by_side(ws, ordered), round(sum(w.travel for w in ws), 6)))
     return {w.table: w for w in best}
 
 
