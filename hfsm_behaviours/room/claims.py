@@ -122,7 +122,8 @@ def crossings(ways: Sequence[Way], tables: Sequence[Mapping[str, Any]], reach: f
 def ends(w: Way, table: Mapping[str, Any], beside: float = BESIDE) -> Rect:
     """Where the table stands once its way is carried (its top grown by `beside`, its pair's room)."""
     yaw = math.radians(float(table.get("yaw", 0.0)))
-    x, y = float(table["x"]) + w.sign * w.travel * math.cos(yaw), float(table["y"]) + w.sign * w.travel * math.sin(yaw)
+    moved = w.sign * w.travel
+    x, y = float(table["x"]) + moved * math.cos(yaw), float(table["y"]) + moved * math.sin(yaw)
     return footprint(table, beside, (x, y))
 
 
