@@ -9,7 +9,7 @@ from dataclasses import dataclass
 from itertools import combinations
 from typing import Any
 
-from hfsm.runtime.agent import Agent
+from hfsm.runtime.agent import Agent, frames
 from hfsm.runtime.engine import Engine, FatalError
 from hfsm.runtime.failing import FAIL_REASON, fail
 from hfsm.runtime.program import Program
@@ -134,6 +134,9 @@ def _forget(engine: Engine) -> None:
         inputs = agent.inputs
         inputs._declared = None  # read again from the world when asked
         inputs._tick = -1
+        if agent.result is None and agent.root is not None:
+            for frame in frames(agent.root):
+                frame._scope = frame._prefix = None  # made again when asked (a tenth of a copy's bytes)
 
 
 def running(agents: Sequence[Agent]) -> list[Agent]:
