@@ -207,6 +207,9 @@ class Machine(Strict):
     outcomes: list[Name] = Field(min_length=1)
     failures: list[Name] | None = None
     outputs: dict[Name, Any] = Field(default_factory=dict)
+    untraced: list[Name] = Field(
+        default_factory=list, description="vars the trace does not show (large values that change often)"
+    )
     receives: list[Name] = Field(default_factory=list)
     timer: Timer | None = None
     any: dict[Name, Name] = Field(default_factory=dict)

@@ -14,7 +14,7 @@ DONE = Event("done")
 
 def start(host: Host, agent: Agent, frame: Frame, params: dict[str, Any], where: Frame | Region) -> Event:
     frame.vars.update(params)
-    frame.vars_shown = False
+    frame.changed(params)
     return DONE
 
 

@@ -23,6 +23,7 @@ from hfsm.checks.structure import (
     check_initial,
     check_reserved_names,
     check_targets,
+    check_untraced,
 )
 from hfsm.checks.waits import check_regions
 from hfsm.errors import Finding, Severity, UserError
@@ -36,6 +37,7 @@ MACHINE_CHECKS: tuple[MachineCheck, ...] = (
     check_reserved_names,
     check_initial,
     check_failures,
+    check_untraced,
     check_targets,
     check_choice_else,
     check_any,

@@ -1,4 +1,4 @@
-"""Checks of one machine's own shape: names, targets, initial state, failures, choices."""
+"""Checks of one machine's own shape: names, targets, initial state, failures, untraced vars, choices."""
 
 from __future__ import annotations
 
@@ -38,6 +38,14 @@ def check_failures(ctx: CheckContext, mf: MachineFile) -> None:
                 "E318",
                 f"failure '{name}' is not an outcome{did_you_mean(name, outcomes)}",
             )
+
+
+def check_untraced(ctx: CheckContext, mf: MachineFile) -> None:
+    declared = mf.model.vars
+    for i, name in enumerate(mf.model.untraced):
+        if name not in declared:
+            message = f"untraced '{name}' is not one of the machine's vars{did_you_mean(name, declared)}"
+            ctx.error(mf, ("untraced", i), "E333", message)
 
 
 def _check_target(ctx: CheckContext, mf: MachineFile, path: tuple[str | int, ...], target: str) -> None:

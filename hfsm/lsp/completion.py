@@ -17,11 +17,12 @@ from hfsm.library import MachineFile
 from hfsm.lsp.analysis import Analysis
 from hfsm.lsp.hover import describe
 from hfsm.model import CallState, Machine
-from hfsm.spec import ParamSpec
+from hfsm.spec import BehaviourSpec, ParamSpec
 
 _EXPR = re.compile(r"\b(vars|params|in|state)\.([A-Za-z0-9_]*)$")
 _DO = re.compile(r"(?:^|[\s{,])do:\s*([a-z0-9_]*)$")
 _TARGET = re.compile(r"(?:^|[\s{,])(?:then|else|initial):\s*([a-z0-9_]*)$")
+_UNTRACED = re.compile(r"^\s*untraced:\s*\[[^\]]*$")  # in `untraced: [..`, a var
 _FLOW_KEY = re.compile(r"([a-z_]+):\s*\{([^{}]*)$")
 _BLOCK_KEY = re.compile(r"^\s*(?:-\s+)?([a-z_]+):\s*(?:#.*)?$")
 _VALUE = re.compile(r"(?:^|[\s{,])([a-z_][a-z0-9_]*):\s*([a-z_]*)$")
@@ -60,9 +61,16 @@ def complete(
         if key == "on" and state is not None and getattr(state, "timer", None) is not None:
             events.append("timeout")
         return [_item(e, Kind.Event, "event") for e in dict.fromkeys(events)]
+    return _vars_or_outputs(model, callee, key if not _UNTRACED.search(before) else "untraced", at_key)
+
+
+def _vars_or_outputs(
+    model: Machine, callee: BehaviourSpec | None, key: str | None, at_key: bool
+) -> list[lsp.CompletionItem]:
+    """A `save`'s var (key) or callee's output (value); an `untraced` list's vars."""
+    if key == "untraced" or (key == "save" and at_key):
+        return [_item(v, Kind.Variable, "var") for v in model.vars]
     if key == "save":
-        if at_key:
-            return [_item(v, Kind.Variable, "var") for v in model.vars]
         outputs = sorted(callee.outputs or ()) if callee else []
         return [_item(o, Kind.Field, "output") for o in outputs]
     return []

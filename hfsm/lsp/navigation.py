@@ -60,6 +60,8 @@ def _named(machine: MachineFile, node: Node) -> Name | None:
         return Name({"states": "state", "vars": "var", "params": "param"}[str(path[0])], node.text)
     if not node.is_key and len(path) == 2 and path[0] == "outcomes":
         return Name("outcome", node.text)
+    if not node.is_key and len(path) == 2 and path[0] == "untraced":
+        return Name("var", node.text)
     if node.is_key and "save" in path[-2:-1]:
         return Name("var", node.text)
     if not node.is_key and path[-1] == "do":
@@ -97,6 +99,8 @@ def _declares(path: Path_, name: Name) -> bool:
 def _names(path: Path_, name: Name) -> bool:
     if name.kind in ("state", "outcome") and is_target(path):
         return True
+    if name.kind == "var":
+        return len(path) == 2 and path[0] == "untraced"
     return name.kind == "outcome" and len(path) == 2 and path[0] in ("outcomes", "failures")
 
 

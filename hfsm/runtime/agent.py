@@ -9,7 +9,7 @@ each running an activity or a frame of its own. Frames and regions know who runs
 from __future__ import annotations
 
 import random
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
@@ -71,7 +71,7 @@ class Frame:
     __slots__ = (
         "_prefix", "_scope", "agent", "attempt", "below", "deadline", "entered", "held", "in_with", "inner",
         "machine", "params", "radio", "retry_at", "started", "state", "state_deadline", "text", "up",
-        "vars", "vars_shown",
+        "vars", "vars_new", "vars_shown",
     )  # fmt: skip
     entered: int  # the tick its current state was entered (set on entering it, as the two below)
     state_deadline: int | None
@@ -85,7 +85,8 @@ class Frame:
         self.machine = machine
         self.params = params
         self.vars = machine.fresh_vars() if machine.var_init else {}
-        self.vars_shown = not self.vars  # False: the trace has not shown the vars as they are now
+        self.vars_shown = not self.vars or machine.untraced.issuperset(self.vars)
+        self.vars_new: set[str] | None = None  # the vars changed since the trace last showed them (None: all)
         self.agent = agent
         self.up = up
         self._scope: Scope | None = None
@@ -103,6 +104,16 @@ class Frame:
         self.inner = self.radio
         self.in_with = False  # a state's `with` being read: `scope.*` is the state's own scope
         self.held: Any = None  # the arc its state holds for the operator (a holds.Hold)
+
+    def changed(self, names: Iterable[str]) -> None:
+        """Vars just assigned: the trace's next record of this machine shows them (unless untraced)."""
+        quiet = self.machine.untraced
+        new = [n for n in names if n not in quiet] if quiet else names
+        if self.vars_shown:
+            self.vars_new = set(new)
+            self.vars_shown = not self.vars_new
+        elif self.vars_new is not None:
+            self.vars_new.update(new)
 
     @property
     def scope(self) -> Scope:

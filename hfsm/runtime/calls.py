@@ -18,10 +18,12 @@ from hfsm.runtime.timers import Timers, Where
 
 def save(frame: Frame, names: tuple[tuple[str, str], ...], outputs: dict[str, Any]) -> None:
     """A state's `save`: the callee's outputs it names, into the machine's vars."""
+    saved = [var for var, output in names if output in outputs]
     for var, output in names:
         if output in outputs:
             frame.vars[var] = outputs[output]
-            frame.vars_shown = False
+    if saved:
+        frame.changed(saved)
 
 
 class Calls:

@@ -79,6 +79,7 @@ class Program:
     def _compile(self, rm: RMachine, m: Machine) -> None:
         rm.var_init = dict(m.vars)
         rm.var_fresh = any(isinstance(v, list | dict) for v in m.vars.values())
+        rm.untraced = frozenset(m.untraced)
         rm.timer = self._timer(m.timer, Names(m.params, None))
         names = Names(m.params, m.vars)
         rm.outputs = {k: compile_value(v, names) for k, v in m.outputs.items()}

@@ -88,11 +88,16 @@ class Records:
 
     @staticmethod
     def vars_of(frame: Frame) -> dict[str, Any]:
-        """`{"vars": {...}}` once after the machine's vars change (a trace shows values on change)."""
+        """`{"vars": {...}}` with the vars changed since the trace last showed them (all at first),
+        once after they change; a machine's `untraced` vars are never shown."""
         if frame.vars_shown:
             return {}
         frame.vars_shown = True
-        return {"vars": dict(frame.vars)}
+        new, frame.vars_new = frame.vars_new, set()
+        values, quiet = frame.vars, frame.machine.untraced
+        if new is None:
+            return {"vars": {k: v for k, v in values.items() if k not in quiet} if quiet else dict(values)}
+        return {"vars": {k: values[k] for k in values if k in new}}
 
 
 class _Json(dict[Any, str]):

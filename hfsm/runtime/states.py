@@ -121,7 +121,10 @@ class RState(Callee):
 
 
 class RMachine:
-    __slots__ = ("endings", "initial", "name", "outputs", "spec", "states", "timer", "var_fresh", "var_init")
+    __slots__ = (
+        "endings", "initial", "name", "outputs", "spec", "states", "timer", "untraced",
+        "var_fresh", "var_init",
+    )  # fmt: skip
 
     def __init__(self, name: str, spec: BehaviourSpec) -> None:
         self.name = name
@@ -131,6 +134,7 @@ class RMachine:
         self.timer: int | Fn | None = None
         self.var_init: dict[str, Any] = {}
         self.var_fresh = False  # whether initial vars must be deep-copied on each call
+        self.untraced: frozenset[str] = frozenset()  # vars the trace does not show
         self.outputs: dict[str, Value] = {}
         self.endings: dict[str, Any] = {}  # outcome -> its Event, shared when there are no outputs
 

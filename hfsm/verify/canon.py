@@ -22,7 +22,7 @@ from typing import Any
 # Attributes that are caches, statistics, the trace, the same in every state of a search, or a way
 # back up the tree the key walks down (a frame's agent and caller, a region's owner, the engine).
 SKIPPED: dict[str, frozenset[str]] = {
-    "Frame": frozenset({"_scope", "_prefix", "text", "vars_shown", "agent", "up"}),
+    "Frame": frozenset({"_scope", "_prefix", "text", "vars_shown", "vars_new", "agent", "up"}),
     "Region": frozenset({"owner"}),
     "Agent": frozenset({"stats", "entries", "clock", "rng", "robot", "inputs"}),
     "Team": frozenset({"engine", "by_name"}),

@@ -102,13 +102,13 @@ class Replay {
     }
   }
 
-  // A record of a machine's state may tell the machine's vars (on change) and its timer: both
+  // A record of a machine's state may tell the machine's vars that changed and its timer: both
   // belong to the entry that runs the machine, one level up.
   frameFacts(a, r) {
     if (r.vars === undefined && r.machine_deadline === undefined) return;
     const frame = a.active.get(r.path.slice(0, -1).join("/"));
     if (!frame) return;
-    if (r.vars !== undefined) frame.vars = r.vars;
+    if (r.vars !== undefined) frame.vars = frame.vars ? { ...frame.vars, ...r.vars } : r.vars;  // those changed
     if (r.machine_deadline !== undefined) frame.machineDeadline = r.machine_deadline;
   }
 

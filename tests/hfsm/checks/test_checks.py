@@ -47,6 +47,7 @@ GOOD = """
         ("outcomes: [done]\nstates:\n  done: {do: wait, on: {done: done}}\n", "E315"),
         ("outcomes: [done]\ninitial: b\nstates:\n  a: {do: wait, on: {done: done}}\n", "E316"),
         ("outcomes: [done]\nfailures: [oops]\nstates:\n  a: {do: wait, on: {done: done}}\n", "E318"),
+        ("outcomes: [done]\nvars: {hold: 0}\nuntraced: [hodl]\nstates:\n  a: {do: wait, on: {done: done}}\n", "E333"),
         ("outcomes: [done]\nstates:\n  a: {do: wait, on: {done: nowhere}}\n", "E301"),
         ("outcomes: [done]\nstates:\n  a: {do: wiat, on: {done: done}}\n", "E300"),
         ("outcomes: [done]\nstates:\n  a: {do: wait, with: {secs: 1}, on: {done: done}}\n", "E302"),

@@ -164,6 +164,17 @@ async def test_completion_offers_a_params_values_when_it_takes_a_fixed_set(clien
 
 
 @pytest.mark.asyncio(loop_scope="module")
+async def test_untraced_completes_and_renames_with_the_machines_vars(client: LanguageClient) -> None:
+    path = DATA / "quiet.yaml"
+    await open_file(client, path)
+    assert await _labels(client, path, 2, len("untraced: [")) == ["hold", "n"]
+    refs = await client.text_document_references_async(
+        lsp.ReferenceParams(context=lsp.ReferenceContext(include_declaration=True), **_fields(at(2, 12, path)))
+    )
+    assert sorted((r.range.start.line, r.range.start.character) for r in refs or []) == [(1, 7), (2, 11)]
+
+
+@pytest.mark.asyncio(loop_scope="module")
 async def test_definition_goes_to_a_state_a_machine_and_a_primitive(client: LanguageClient) -> None:
     path = DATA / "caller.yaml"
     await open_file(client, path)
