@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from hfsm_behaviours.drive.localise import Localised
+from hfsm_behaviours.drive.localise import Framed, Localised
 from hfsm_sim import Robot
 from hfsm_sim.light import LightRobot
 from hfsm_sim.perception import Blob, blob_ground, find_robots, find_table, pixel_bearing, see_tables
@@ -30,7 +30,7 @@ LIGHT_BLIND = ("table_in_view", "table_bearing", "table_distance", "tables_in_vi
 class Senses:
     """One robot's inputs at one tick (a new tick starts afresh)."""
 
-    def __init__(self, robot: Robot | LightRobot | Localised, own_colour: int,
+    def __init__(self, robot: Robot | LightRobot | Localised | Framed, own_colour: int,
                  tasks: list[dict[str, Any]] | None = None, told: dict[str, Any] | None = None) -> None:
         self.own_colour = own_colour  # the index of its own body colour: it never sees itself
         self.tasks = tasks or []
@@ -101,6 +101,6 @@ class Senses:
         return any(b.found for i, b in enumerate(blobs) if i != self.own_colour)
 
     @staticmethod
-    def pose(robot: Robot | LightRobot | Localised) -> dict[str, float]:
+    def pose(robot: Robot | LightRobot | Localised | Framed) -> dict[str, float]:
         x, y, yaw = robot.odometry()
         return {"x": round(float(x), 6), "y": round(float(y), 6), "yaw": _degrees(yaw)}

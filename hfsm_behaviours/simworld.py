@@ -18,7 +18,7 @@ from hfsm.primitive import Message
 from hfsm.runtime.program import span_ticks
 from hfsm.world import InputSpec
 from hfsm.yamlio import read_mapping
-from hfsm_behaviours.drive.localise import SCAN_EVERY, Localised
+from hfsm_behaviours.drive.localise import FRAMED_EVERY, SCAN_EVERY, Framed, Localised
 from hfsm_behaviours.inputs import SIM_INPUTS
 from hfsm_behaviours.senses import Senses
 from hfsm_sim import Scenario, World, resolve
@@ -94,9 +94,12 @@ class SimWorld:
         self._table_starts = [truth.table_pose(i)[:2] for i in range(len(truth.tables))]
         room = (world.scenario.room.width, world.scenario.room.depth)
         # Light robots know where they are by odometry corrected against the room by their laser;
-        # the humanoids by odometry alone (their cameras see the table, not the walls' lines).
+        # the humanoids by odometry from where they were told they started, corrected the same way
+        # once their machine asks for it (the `localise` primitive), else by odometry alone.
         self._localised = {name: Localised(robot, room) for name, robot in world.robots.items()
                            if isinstance(robot, LightRobot)}
+        self._framed = {name: Framed(robot) for name, robot in world.robots.items()
+                        if not isinstance(robot, LightRobot)}
 
     @property
     def outputs(self) -> list[Path]:
@@ -117,8 +120,8 @@ class SimWorld:
         if self._recorder is not None:
             self.world.record(self._recorder)
 
-    def handle(self, agent: str) -> AnyRobot | Localised:
-        return self._localised.get(agent) or self.world.robots[agent]
+    def handle(self, agent: str) -> AnyRobot | Localised | Framed:
+        return self._localised.get(agent) or self._framed.get(agent) or self.world.robots[agent]
 
     def inputs(self) -> Mapping[str, InputSpec]:
         return SIM_INPUTS
@@ -155,6 +158,9 @@ class SimWorld:
             for localised in self._localised.values():
                 if not localised.body.failed:
                     localised.update()
+        if tick % max(1, round(FRAMED_EVERY / self.dt)) == 0:
+            for framed in self._framed.values():
+                framed.update()
         if self.progress_every and self.world.time + 1e-9 >= self._next_progress:
             self._next_progress += self.progress_every
             self._progress()

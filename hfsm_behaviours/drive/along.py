@@ -10,6 +10,7 @@ from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.approach.frames import wrap
 from hfsm_behaviours.drive.avoid import Detour, Sensing
 from hfsm_behaviours.drive.goto import body_velocity, heading
+from hfsm_behaviours.drive.localise import Framed
 
 FACED = 0.1  # radians: facing the point
 
@@ -64,3 +65,18 @@ def odometry_pose(ctx: Context) -> Outcome:
     """Where the robot is by its odometry now, {x, y: metres, yaw: degrees} (as in.pose)."""
     x, y, yaw = ctx.robot.odometry()
     return Outcome("read", pose={"x": round(x, 4), "y": round(y, 4), "yaw": round(math.degrees(yaw), 2)})
+
+
+@primitive(outcomes=["localising", "unable"], world="sim")
+def localise(ctx: Context, *, start: dict[str, Any], room: dict[str, Any]) -> Outcome:
+    """From now on this humanoid's odometry (in.pose, still in its own start frame) and its cameras'
+    poses are corrected against the walls of the `room` ({width, depth}: metres, centred on 0) by
+    its range finder, every second: its start frame is where it was told it started (`start`: {x, y:
+    metres, yaw: degrees} in the room's frame). `unable` for a body without it (a light body's
+    odometry is corrected so always)."""
+    robot = ctx.robot
+    if not isinstance(robot, Framed):
+        return Outcome("unable")
+    robot.localise((float(start["x"]), float(start["y"]), math.radians(float(start["yaw"]))),
+                   (float(room["width"]), float(room["depth"])))
+    return Outcome("localising")

@@ -12,7 +12,7 @@ Nothing here reads the simulator's truth: only odometry, the scan and the room's
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -22,6 +22,7 @@ from hfsm_behaviours.approach.frames import wrap
 Pose = tuple[float, float, float]
 BEAMS, REACH = 60, 20.0  # a full turn every 6 degrees, 20 m (a Hokuyo UTM-30LX reaches 30 m)
 SCAN_EVERY = 0.5  # seconds between scans
+FRAMED_EVERY = 1.0  # seconds between a humanoid's scans for its frame (it walks 0.1 m/s)
 GATES = (0.1, 0.05, 0.03)  # metres per metre of range, per Gauss-Newton step: a yaw error moves far
 GATE_FLOOR, GATE_CAP = 0.1, 0.8  # points more; plus this, at most that
 MIN_POINTS = 6  # beams on walls needed to correct at all
@@ -118,3 +119,55 @@ class Localised:
         odom = self.body.odometry()
         scan = self.body.scan(BEAMS, REACH)
         self.fix = Fix.between(odom, correct(self.fix.apply(odom), scan, self.room))
+
+
+def compose(a: Pose, b: Pose) -> Pose:
+    """Pose `b`, given in the frame of pose `a`, in `a`'s own frame."""
+    c, s = math.cos(a[2]), math.sin(a[2])
+    return (a[0] + c * b[0] - s * b[1], a[1] + s * b[0] + c * b[1], wrap(a[2] + b[2]))
+
+
+def relative(a: Pose, b: Pose) -> Pose:
+    """Pose `b` in the frame of pose `a` (the inverse of `compose`)."""
+    c, s = math.cos(a[2]), math.sin(a[2])
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    return (c * dx + s * dy, -s * dx + c * dy, wrap(b[2] - a[2]))
+
+
+class Framed:
+    """A humanoid as the behaviours drive it: everything is the body's until its machine tells it
+    where it started in a room (`localise`: the start pose it was told, the room's size); from then
+    on `odometry()` (still in its own start frame) and the cameras' poses are its odometry corrected
+    against the room's walls by its range finder (`update`): the error of the told start (its yaw
+    moves far points most) and the drift of long walks. Never told, it is its body exactly."""
+
+    def __init__(self, robot: Any) -> None:
+        self.body = robot
+        self.fix: Fix | None = None
+        self.origin: Pose = (0.0, 0.0, 0.0)
+        self.room: tuple[float, float] = (0.0, 0.0)
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self.body, name)
+
+    def localise(self, origin: Pose, room: tuple[float, float]) -> None:
+        self.origin, self.room = origin, room
+        if self.fix is None:
+            self.fix = Fix()
+            self.update()
+
+    def odometry(self) -> Pose:
+        odom: Pose = self.body.odometry()
+        return odom if self.fix is None else self.fix.apply(odom)
+
+    def camera_model(self, camera: str = "forward") -> Any:
+        model = self.body.camera_model(camera)
+        return model if self.fix is None else replace(model, odom=self.odometry())
+
+    def update(self) -> None:
+        if self.fix is None or self.body.failed:
+            return
+        odom = self.body.odometry()
+        scan = self.body.scan(BEAMS, REACH)
+        room = correct(compose(self.origin, self.fix.apply(odom)), scan, self.room)
+        self.fix = Fix.between(odom, relative(self.origin, room))

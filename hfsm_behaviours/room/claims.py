@@ -16,6 +16,8 @@ from dataclasses import dataclass
 from typing import Any
 
 Point = tuple[float, float]
+GRAZING = 50.0  # degrees from square on beyond which a way is carried only when no other is free
+BESIDE = 0.5  # metres round a table at its wall where its pair stands: two such closer meet
 
 
 @dataclass(frozen=True)
@@ -58,11 +60,16 @@ def overlap(a: Rect, b: Rect) -> bool:
 
 def wall_hit(x: float, y: float, ux: float, uy: float, width: float, depth: float) -> float:
     """Metres from (x, y) along (ux, uy) to the first wall of a room centred on 0."""
+    return min(_hits(x, y, ux, uy, width, depth))[0]
+
+
+def _hits(x: float, y: float, ux: float, uy: float, width: float, depth: float) -> list[tuple[float, float]]:
+    """(metres to the wall, the cosine of the way's angle to that wall's normal) for each wall ahead."""
     hits = []
     for c, u, half in ((x, ux, width / 2), (y, uy, depth / 2)):
         if abs(u) > 1e-9:
-            hits.append(((half if u > 0 else -half) - c) / u)
-    return min(hits)
+            hits.append((((half if u > 0 else -half) - c) / u, abs(u)))
+    return hits
 
 
 @dataclass(frozen=True)
@@ -72,6 +79,13 @@ class Way:
     travel: float  # metres the table's centre moves until its end touches the wall
     toward: Point  # the wall point the table's leading end heads for
     corridor: Rect
+    square: float = 1.0  # the cosine of the angle between the way and the normal of the wall it meets
+
+    @property
+    def grazing(self) -> bool:
+        """The way meets its wall at more than GRAZING from square on: the table's corner touches the
+        wall long before its end, and the pair's look for the wall, then the table, slide along it."""
+        return self.square < math.cos(math.radians(GRAZING))
 
 
 def way(table: Mapping[str, Any], sign: int, width: float, depth: float, reach: float) -> Way:
@@ -79,14 +93,14 @@ def way(table: Mapping[str, Any], sign: int, width: float, depth: float, reach: 
     ux, uy = sign * math.cos(yaw), sign * math.sin(yaw)
     x, y = float(table["x"]), float(table["y"])
     half = float(table.get("length", 0.8)) / 2
-    to_wall = wall_hit(x, y, ux, uy, width, depth)
+    to_wall, square = min(_hits(x, y, ux, uy, width, depth))
     travel = max(0.0, to_wall - half)
     # from the trailing end at the start to the wall
     span = (to_wall + half) / 2
     centre = (x + ux * (to_wall - span), y + uy * (to_wall - span))
     corridor = Rect(centre[0], centre[1], ux, uy, span, float(table.get("width", 0.5)) / 2 + reach)
     toward = (round(x + ux * to_wall, 6), round(y + uy * to_wall, 6))
-    return Way(str(table["id"]), sign, round(travel, 6), toward, corridor)
+    return Way(str(table["id"]), sign, round(travel, 6), toward, corridor, round(square, 6))
 
 
 def footprint(table: Mapping[str, Any], reach: float, at: Point | None = None) -> Rect:
@@ -105,16 +119,38 @@ def crossings(ways: Sequence[Way], tables: Sequence[Mapping[str, Any]], reach: f
     return count
 
 
+def ends(w: Way, table: Mapping[str, Any], beside: float = BESIDE) -> Rect:
+    """Where the table stands once its way is carried (its top grown by `beside`, its pair's room)."""
+    yaw = math.radians(float(table.get("yaw", 0.0)))
+    moved = w.sign * w.travel
+    x, y = float(table["x"]) + moved * math.cos(yaw), float(table["y"]) + moved * math.sin(yaw)
+    return footprint(table, beside, (x, y))
+
+
+def side_by_side(ways: Sequence[Way], tables: Sequence[Mapping[str, Any]], beside: float = BESIDE) -> int:
+    """Pairs of tables that end at their walls closer than 2 x `beside` m: their pairs would land
+    them back to back, and the leader looking along its table's edge would take the other table's
+    end for its own (test_room_turns_sim: two tables 0.8 m apart carried to one wall side by side,
+    the second pair squaring up for ever at the first table's end)."""
+    by_id = {str(t["id"]): t for t in tables}
+    spots = [ends(w, by_id[w.table], beside) for w in ways]
+    return sum(overlap(a, b) for a, b in itertools.combinations(spots, 2))
+
+
 def claim_walls(tables: Sequence[Mapping[str, Any]], width: float, depth: float,
                 reach: float = 0.5) -> dict[str, Way]:
-    """Every table's way to a wall: the choice with the fewest crossings, then the least travel, then
-    the first in table order (+1 before -1). Up to 2^K choices: K is at most 5 here."""
+    """Every table's way to a wall: the choice with the fewest crossings, then the fewest ways meeting
+    their wall grazing (`Way.grazing`: a table at 21 degrees carried to a wall along it slid along
+    the wall, development room walls-902), then the fewest tables ending side by side
+    (`side_by_side`), then the least travel, then the first in table order (+1 before -1). Up to 2^K
+    choices: K is at most 6 here."""
     ordered = sorted(tables, key=lambda t: str(t["id"]))
     if not ordered:
         return {}
     options = [[way(t, s, width, depth, reach) for s in (1, -1)] for t in ordered]
     best = min(itertools.product(*options),
-               key=lambda ws: (crossings(ws, ordered, reach), round(sum(w.travel for w in ws), 6)))
+               key=lambda ws: (crossings(ws, ordered, reach), sum(w.grazing for w in ws),
+                               side_by_side(ws, ordered), round(sum(w.travel for w in ws), 6)))
     return {w.table: w for w in best}
 
 

@@ -9,6 +9,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from hfsm_behaviours.room.claims import Rect, claim_walls, turns
+from hfsm_behaviours.room.cramped import free_place
 from hfsm_behaviours.room.frames import difficulty_of
 from hfsm_behaviours.room.stations import room_ties
 from hfsm_behaviours.tararc.formulas import PAPER, Coefficients
@@ -35,16 +36,19 @@ def make_room_plan(states: Mapping[str, Mapping[str, Any]], tasks: Sequence[Mapp
                    room: Mapping[str, Any], coeff: Coefficients = PAPER, reach: float = 0.5) -> Plan:
     """TARARC's steps 2-5 with one group per table (relevance ties by the robots' stations,
     `stations.room_ties`), every table's claimed wall and the tables it waits for (`claims.turns`:
-    `after`), and every robot's colour as it said it (-1:
-    not said), for a robot to look for its partner."""
+    `after`), the place beside the free side of a table with no room to stand at its other side
+    (`cramped.free_place`: `free`, [] when both sides have room), and every robot's colour as it
+    said it (-1: not said), for a robot to look for its partner."""
     tables = tables_of(tasks)
     if len(states) < PAIR * len(tables):
         raise ValueError(f"{len(states)} robots cannot make {len(tables)} pairs")
     plan = make_plan(states, tables, coeff, room_ties(states, tables))
-    ways = claim_walls(tables, float(room["width"]), float(room["depth"]), reach)
+    width, depth = float(room["width"]), float(room["depth"])
+    ways = claim_walls(tables, width, depth, reach)
     after = turns(ways, tables, reach)
     plan["tables"] = {t["id"]: {**t, "toward": list(ways[t["id"]].toward), "after": after[t["id"]],
-                                "corridor": _rect(ways[t["id"]].corridor)} for t in tables}
+                                "corridor": _rect(ways[t["id"]].corridor),
+                                "free": free_place(t, width, depth)} for t in tables}
     plan["colours"] = {r: int(s.get("colour", -1)) for r, s in sorted(states.items())}
     return plan
 

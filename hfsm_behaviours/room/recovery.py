@@ -8,7 +8,8 @@ partner failed). Robots that heard the same, in any order, agree.
 
     job = {"role": "leader" | "assistant" | "spare" | "idle" | "stuck", "table": "table1" | "",
            "partner": "r2" | "", "channel": "table1_r1_r2_" | "", "at": [x, y], "toward": [x, y],
-           "group": 0, "others": [...], "key": "k0"}  (+ "stuck": TABLE, "why": TEXT when stuck)
+           "group": 0, "others": [...], "key": "k0", "slide": "" | "me" | "partner"}
+          (+ "stuck": TABLE, "why": TEXT when stuck)
 
 `at` (where the table is believed to be) and `toward` are in the room's frame. A robot whose carry
 ended without its table at a wall says the pairing is spent (news too); once both robots of a pair
@@ -26,6 +27,7 @@ import math
 from collections.abc import Mapping, Sequence
 from typing import Any
 
+from hfsm_behaviours.room.cramped import slide_job
 from hfsm_behaviours.tararc.plan import Plan, after_losses
 
 PAIR = 2
@@ -150,9 +152,10 @@ def place_of(me: str, groups: Sequence[Mapping[str, Any]], done: Sequence[str]) 
 
 
 def job_in(plan: Plan, me: str, place: Mapping[str, Any], channel: str, lost: Sequence[str],
-           done: Sequence[str], seen: Mapping[str, Sequence[float]], stuck: Mapping[str, str]
-           ) -> dict[str, Any]:
-    """The job as the machines carry it, from this robot's place and its pairing's channel."""
+           done: Sequence[str], seen: Mapping[str, Sequence[float]], stuck: Mapping[str, str],
+           spent: Sequence[str] = ()) -> dict[str, Any]:
+    """The job as the machines carry it, from this robot's place and its pairing's channel; `slide`:
+    who of the pair slides a table with no room at one side alone (`cramped.slide_job`)."""
     alive = sorted(r for r in plan["robots"] if r not in set(lost))
     job: dict[str, Any] = {"role": place["role"], "table": place["table"], "partner": "", "channel": "",
                            "at": [], "toward": [], "group": place["group"],
@@ -163,7 +166,8 @@ def job_in(plan: Plan, me: str, place: Mapping[str, Any], channel: str, lost: Se
         job.update(at=[float(at[0]), float(at[1])], toward=list(table["toward"]))
     if place["role"] in ("leader", "assistant"):
         partner = place["assistant"] if place["role"] == "leader" else place["leader"]
-        job.update(partner=partner, channel=channel)
+        job.update(partner=partner, channel=channel,
+                   slide=slide_job(plan["tables"], place, me, plan["robots"], channel, spent))
     return {**job, "role": "stuck", **stuck} if stuck else job
 
 
@@ -178,4 +182,4 @@ def job_of(plan: Plan, me: str, lost: Sequence[str], done: Sequence[str],
     place = place_of(me, groups, done)
     pair = place["table"], place["leader"], place["assistant"]
     channel = channel_of(*pair, spent) if place["leader"] else ""
-    return job_in(plan, me, place, channel, lost, done, seen, stranded(groups, done, bool(slid)))
+    return job_in(plan, me, place, channel, lost, done, seen, stranded(groups, done, bool(slid)), spent)

@@ -9,9 +9,12 @@ was: failed robots, waiting spares, pairs at work), and costs `CORRIDOR` times m
 claimed carry corridor (a pair may carry through it). It is then shortened where a straight line
 stays as clear.
 
-Right of way: a walker says its path; two walkers whose paths come within `2 * HALF` m of each
-other do not walk at once: the one that said its walk first (then the smaller id) goes, the other
-waits until it stops saying it (arrived), for a bounded time.
+Right of way: a walker says its path and, as it walks, where it is; two walkers whose paths come
+within `2 * HALF` m of each other do not walk at once: the one that said its walk first (then the
+one with fewer robots standing in its way, then the smaller id) goes, the other waits while what is
+left of the first one's way (`left_of`, from where it said it is) still comes that near the first
+`HEAD` m of its own (`head`: beyond, it would meet the first one only behind it or after it passed,
+and both sense each other), or until the first stops saying it (arrived), for a bounded time.
 
 Everything here is pure and in the room's frame.
 """
@@ -36,6 +39,8 @@ KEEP = 0.8  # metres from a walker's centre to a robot standing still, at least
 CORRIDOR = 4.0  # a metre walked in a claimed corridor costs this many
 GAP = 1.2  # metres from a table's centre line to a robot's place beside it
 HALF = 0.45  # half the width of the strip a walker sweeps
+WALL = 0.35  # metres from a wall within which no robot stands
+HEAD = 2.0  # metres of its way a walker about to set off keeps clear of an earlier walker's
 
 
 @dataclass(frozen=True)
@@ -85,12 +90,39 @@ def places(table: Mapping[str, Any], at: Point, gap: float = GAP) -> list[Point]
 
 
 def place_for(table: Mapping[str, Any], at: Point, me: Point, others: Sequence[Point],
-              gap: float = GAP) -> Point:
-    """Of the two places beside the table, the one with fewer robots within `KEEP` m of it (a
-    partner or a failed robot stands at the other), then the nearer one to `me`."""
-    def key(p: Point) -> tuple[int, float]:
-        return (sum(math.dist(p, o) < KEEP for o in others), math.dist(p, me))
-    return min(places(table, at, gap), key=key)
+              gap: float = GAP, partner: Point | None = None, leads: bool = True,
+              room: tuple[float, float] | None = None) -> Point:
+    """Of the two places beside the table, the one with fewer robots within `KEEP` m of it (a failed
+    robot stands at the other), then the nearer one to `me`. With a `partner` (where it said it
+    stands), the pair takes one place each, the way that puts both nearer their places (a partner
+    standing at one keeps it); when both ways are as near, the pair's leader (`leads`: this robot,
+    else the partner) takes the place the rule above gives it and the other robot the other place:
+    two robots walking to one table never head for the same side. A place no robot can stand at
+    (within `WALL` m of a wall of the `room`, {width, depth} centred on the origin, or beyond it) is
+    not taken while the other is: both robots then head for the other side."""
+    sides = places(table, at, gap)
+    if room is not None:
+        free = [p for p in sides if standable(p, room)]
+        if len(free) == 1:
+            return free[0]
+
+    def key(p: Point, who: Point) -> tuple[int, float]:
+        return (sum(math.dist(p, o) < KEEP for o in others if o != partner), math.dist(p, who))
+    if partner is None:
+        return min(sides, key=lambda p: key(p, me))
+    first = math.dist(me, sides[0]) + math.dist(partner, sides[1])
+    second = math.dist(me, sides[1]) + math.dist(partner, sides[0])
+    if abs(first - second) > 1e-6:
+        return sides[0] if first < second else sides[1]
+    theirs = min(sides, key=lambda p: key(p, me if leads else partner))
+    if leads:
+        return theirs
+    return sides[1] if theirs == sides[0] else sides[0]
+
+
+def standable(p: Point, room: tuple[float, float], wall: float = WALL) -> bool:
+    """Whether a robot can stand at `p` in a room of (width, depth) centred on the origin."""
+    return abs(p[0]) <= room[0] / 2 - wall and abs(p[1]) <= room[1] / 2 - wall
 
 
 def _node(p: Point, scene: Scene) -> tuple[int, int]:
@@ -202,6 +234,37 @@ def conflict(mine: Sequence[Point], theirs: Sequence[Point], half: float = HALF)
     return any(_segment_gap(a, b, c, d) < 2 * half for a, b in ours for c, d in other)
 
 
-def goes_first(mine: tuple[float, str], theirs: tuple[float, str]) -> bool:
-    """Right of way between two walkers: (when each said its walk first, its id); the smaller goes."""
-    return (round(mine[0], 6), mine[1]) < (round(theirs[0], 6), theirs[1])
+def goes_first(mine: tuple[float, int, str], theirs: tuple[float, int, str]) -> bool:
+    """Right of way between two walkers: (when each said its walk first, how many robots stand in its
+    way (`crowd`: in a packed start, those on the outside get out first), its id); the smaller goes."""
+    return (round(mine[0], 6), mine[1], mine[2]) < (round(theirs[0], 6), theirs[1], theirs[2])
+
+
+def crowd(walk: Sequence[Point], standing: Sequence[Point], half: float = HALF) -> int:
+    """How many of the robots `standing` a walk (its start then its waypoints) passes within `half` m
+    of: robots in its way, not those beside it (parked 0.8 m apart, a neighbour is not in the way)."""
+    return sum(conflict(walk, [p], half / 2) for p in standing)
+
+
+def left_of(path: Sequence[Point], at: Point) -> list[Point]:
+    """What is left of a walk (its start then its waypoints) for a walker at `at`: `at`, then the
+    waypoints after the stretch of the walk nearest it."""
+    if len(path) < 2:
+        return [at]
+    stretches = list(itertools.pairwise(path))
+    nearest = min(range(len(stretches)), key=lambda k: _segment_gap(at, at, *stretches[k]))
+    return [at, *path[nearest + 1:]]
+
+
+def head(path: Sequence[Point], metres: float = HEAD) -> list[Point]:
+    """The first `metres` of a walk (its start then its waypoints)."""
+    out, left = [path[0]], metres
+    for a, b in itertools.pairwise(path):
+        step = math.dist(a, b)
+        if step >= left:
+            t = left / step if step > 0 else 0.0
+            out.append((a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t))
+            return out
+        out.append(b)
+        left -= step
+    return out

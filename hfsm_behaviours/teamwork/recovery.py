@@ -71,15 +71,16 @@ def room_channel(ctx: Context, *, table: str, leader: str, assistant: str, spent
 @primitive(outcomes=["assigned"], outputs=["job", "drawn"])
 def room_job(ctx: Context, *, plan: dict[str, Any], place: dict[str, Any], channel: str, lost: list[Any],
              done: list[Any], seen: dict[str, Any], start: dict[str, Any], stuck: dict[str, Any],
-             where: dict[str, Any] | None = None) -> Outcome:
+             where: dict[str, Any] | None = None, spent: list[Any] | None = None) -> Outcome:
     """The job the machines carry (`room.recovery`): role, table, partner, channel, where the table
     is believed to be (`seen` by a survivor, else the plan's) and its wall; `table_local` and
     `toward_local` in this robot's start frame (`start`); `turn`, the tables not yet done that its
-    table waits for (`claims.turns`). `drawn`: what the monitor draws of this robot's belief."""
+    table waits for (`claims.turns`); `slide`, who slides a cramped table alone (`spent`: the
+    pairings spent, "CHANNEL/ROBOT"). `drawn`: what the monitor draws of this robot's belief."""
     sightings = {str(t): [float(v["x"]), float(v["y"])] for t, v in seen.items()}
     finished = _strs(done)
     job = recovery.job_in(plan, ctx.agent, place, channel, _strs(lost), finished, sightings,
-                          {str(k): str(v) for k, v in stuck.items()})
+                          {str(k): str(v) for k, v in stuck.items()}, _strs(spent))
     after = plan["tables"][job["table"]].get("after", []) if job["table"] else []
     local = {"table_local": to_local(start, job["at"]) if job["at"] else [],
              "toward_local": to_local(start, job["toward"]) if job["toward"] else [],

@@ -16,7 +16,10 @@ from hfsm_behaviours.room.walks import (
     Scene,
     conflict,
     corridor,
+    crowd,
     goes_first,
+    head,
+    left_of,
     place_for,
     plan_walk,
     table_where,
@@ -39,7 +42,7 @@ def _scene(tables: dict[str, Any], done: list[Any], seen: dict[str, Any], robots
     return Scene(width, depth, tuple(tops), tuple(lanes), tuple(robots))
 
 
-@primitive(outcomes=["walk", "here"], outputs=["path", "walk", "face", "length"])
+@primitive(outcomes=["walk", "here"], outputs=["path", "walk", "face", "length", "standing"])
 def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose: dict[str, Any],
                tables: dict[str, Any], room: dict[str, Any], done: list[Any] | None = None,
                seen: dict[str, Any] | None = None, where: dict[str, Any] | None = None,
@@ -49,7 +52,8 @@ def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
     [x, y]}, room frame; else where they started, `starts`: {robot: {x, y}}); `here` when the robot
     is within `near` m of that place. `path`: the waypoints in its own start frame; `walk`: where it
     stands then the waypoints, in the room's frame (what it says to the other walkers); `face`: the
-    table, in its own start frame; `length`: the way's metres (0 when here)."""
+    table, in its own start frame; `length`: the way's metres (0 when here); `standing`: where the
+    other robots stand as it knows it ({robot: [x, y]}, room frame: for room_give_way)."""
     me_local = [float(pose["x"]), float(pose["y"])]
     x, y = to_room(start, me_local)
     me = (x, y)
@@ -59,9 +63,11 @@ def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
     said = {str(r): (float(p["x"]), float(p["y"])) for r, p in (starts or {}).items()}
     said.update({str(r): (float(p[0]), float(p[1])) for r, p in (where or {}).items()})
     others = [p for r, p in sorted(said.items()) if r != ctx.agent]
-    goal = place_for(table, at, me, others)
+    mate = said.get(str(job.get("partner", "")))
+    size = (float(room["width"]), float(room["depth"])) if room else None
+    goal = place_for(table, at, me, others, partner=mate, leads=job.get("role") != "assistant", room=size)
     if math.dist(me, goal) <= near:
-        return Outcome("here", path=[], walk=[], face=to_local(start, at), length=0.0)
+        return Outcome("here", path=[], walk=[], face=to_local(start, at), length=0.0, standing={})
     # the table walked to is not in the way of its own place
     rest = {k: v for k, v in tables.items() if k != str(job["table"])}
     scene = _scene(rest, done or [], seen or {}, others, room)
@@ -69,36 +75,50 @@ def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
     points = plan_walk(scene, me, goal) or [goal]
     length = sum(math.dist(a, b) for a, b in zip([me, *points], points, strict=False))
     return Outcome("walk", path=[to_local(start, p) for p in points], face=to_local(start, at),
-                   walk=[[round(p[0], 4), round(p[1], 4)] for p in [me, *points]], length=round(length, 3))
+                   walk=[[round(p[0], 4), round(p[1], 4)] for p in [me, *points]], length=round(length, 3),
+                   standing={r: [p[0], p[1]] for r, p in sorted(said.items()) if r != ctx.agent})
 
 
-@primitive(outcomes=["clear", "timeout"], outputs=["since"])
-def room_give_way(ctx: Context, *, walk: list[Any], every: float = 1.0, quiet: float = 2.5,
-                  limit: float = 45.0) -> Outcome:
-    """Say this walk (`room_walk`, every `every` s) and wait while another walker whose path comes
-    near it has the right of way (said its walk first, then the smaller id) and still says it (heard
-    within `quiet` s), for `limit` s at most. `since`: when this robot first said its walk (the
-    walkers it meets later give way to it)."""
+@primitive(outcomes=["clear", "timeout"], outputs=["since", "crowd", "waited"])
+def room_give_way(ctx: Context, *, walk: list[Any], standing: dict[str, Any] | None = None,
+                  every: float = 1.0, quiet: float = 2.5, limit: float = 90.0) -> Outcome:
+    """Say this walk (`room_walk`, every `every` s) and wait while another walker with the right of
+    way (said its walk first, then fewer robots `standing` in its way ({robot: [x, y]}, room frame:
+    `walks.crowd`; in a packed start the robots on the outside go first), then the smaller id) still
+    says it (heard within `quiet` s) and what is
+    left of its way comes near the first metres of this one (`walks.conflict`, `walks.head`): all of
+    its way until it says where it is (its `pose` and `start` as room_pulse says them), then only the
+    rest of it from there on, so that a walker waits only until the first has passed or is ahead
+    of it; for `limit` s at most.
+    `since`: when this robot first said its walk (the walkers it meets later give way to it), said
+    with its `crowd`; `waited`: the seconds it waited."""
     since = round(ctx.time, 6)
-    mine = [(float(p[0]), float(p[1])) for p in walk]
-    heard: dict[str, tuple[float, list[Point], float]] = {}
+    way = [(float(p[0]), float(p[1])) for p in walk]
+    mine = head(way)
+    others = [(float(p[0]), float(p[1])) for r, p in sorted((standing or {}).items()) if r != ctx.agent]
+    many = crowd(way, others)
+    heard: dict[str, tuple[float, int, list[Point], float]] = {}
     next_say = ctx.time
 
     def free() -> bool:
         nonlocal next_say
         if ctx.time >= next_say:
-            ctx.send(WALK, keep="last", round=0, data={"walk": walk, "since": since})  # a walker's latest
+            ctx.send(WALK, keep="last", round=0, data={"walk": walk, "since": since, "crowd": many})
             next_say = ctx.time + every
         while (m := ctx.receive(WALK)) is not None:
             data = m.data.get("data", {})
             if m.sender != ctx.agent and data.get("walk"):
                 path = [(float(p[0]), float(p[1])) for p in data["walk"]]
-                heard[m.sender] = (float(data.get("since", 0.0)), path, ctx.time)
+                pose, start = m.data.get("pose"), m.data.get("start")
+                if pose and start:
+                    x, y = to_room(start, [pose["x"], pose["y"]])
+                    path = left_of(path, (x, y))
+                heard[m.sender] = (float(data.get("since", 0.0)), int(data.get("crowd", 0)), path, ctx.time)
         if ctx.time - since < every + ctx.dt:  # hear the others' walks first
             return False
-        return not any(ctx.time - t <= quiet and goes_first((s, r), (since, ctx.agent)) and conflict(mine, p)
-                       for r, (s, p, t) in heard.items())
+        return not any(ctx.time - t <= quiet and goes_first((s, n, r), (since, many, ctx.agent))
+                       and conflict(mine, p) for r, (s, n, p, t) in heard.items())
 
-    if ctx.wait_until(free, timeout=limit):
-        return Outcome("clear", since=since)
-    return Outcome("timeout", since=since)
+    clear = ctx.wait_until(free, timeout=limit)
+    waited = round(ctx.time - since, 6)
+    return Outcome("clear" if clear else "timeout", since=since, crowd=many, waited=waited)

@@ -7,7 +7,7 @@ from typing import Any
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from hfsm_behaviours.room.claims import claim_walls, turns, way
+from hfsm_behaviours.room.claims import claim_walls, side_by_side, turns, way
 
 
 def waits(tables: list[dict[str, Any]], width: float = 8.0, depth: float = 6.0) -> dict[str, list[str]]:
@@ -49,3 +49,33 @@ def test_no_two_pairs_ever_wait_for_each_other(spots: list[tuple[float, float, i
         order += sorted(ready)
         for t in ready:
             del left[t]
+
+
+def test_a_way_meeting_its_wall_grazing_is_carried_the_other_way() -> None:
+    """Development room walls-902: table2 at 21 degrees, 1.55 m from the north wall, was carried to it
+    (its nearer wall along its axis, 69 degrees from square on) and slid along it into the corner; the
+    other way meets the west wall 21 degrees from square on, and is taken though it is longer."""
+    tables = [{"id": "table1", "x": 5.44, "y": -2.3, "yaw": 82.0, "length": 0.86, "width": 0.47},
+              {"id": "table2", "x": -0.41, "y": 1.75, "yaw": 21.0, "length": 1.0, "width": 0.57}]
+    north = way(tables[1], 1, 13.8, 6.6, 0.5)
+    west = way(tables[1], -1, 13.8, 6.6, 0.5)
+    assert north.grazing and not west.grazing and north.travel < west.travel
+    claims = claim_walls(tables, 13.8, 6.6)
+    assert claims["table2"].sign == -1 and claims["table2"].toward[0] == -6.9
+    assert claims["table1"].sign == -1  # 8 degrees from square on: kept the shorter way
+
+
+def test_tables_side_by_side_are_carried_to_opposite_walls() -> None:
+    """Two tables 0.8 m apart carried to one wall would end there side by side, 0.3 m apart, their
+    pairs back to back, and the second leader looking along its edge saw the first table's end as
+    its own (tests/behaviours/test_room_turns_sim.py): at equal travel they go to opposite walls."""
+    tables = [{"id": "a", "x": 0.0, "y": -0.65, "yaw": 0}, {"id": "b", "x": 0.0, "y": 0.65, "yaw": 0}]
+    ways = claim_walls(tables, 7.0, 5.0)
+    assert {ways["a"].sign, ways["b"].sign} == {1, -1}
+    assert side_by_side(list(ways.values()), tables) == 0
+    assert side_by_side([way(t, 1, 7.0, 5.0, 0.5) for t in tables], tables) == 1
+
+
+def test_tables_far_apart_on_one_wall_are_not_side_by_side() -> None:
+    tables = [{"id": "a", "x": 0.0, "y": -1.5, "yaw": 0}, {"id": "b", "x": 0.0, "y": 1.5, "yaw": 0}]
+    assert side_by_side([way(t, 1, 7.0, 5.0, 0.5) for t in tables], tables) == 0

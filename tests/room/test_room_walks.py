@@ -15,11 +15,14 @@ from hfsm_behaviours.room.walks import (
     Scene,
     conflict,
     corridor,
+    crowd,
     goes_first,
+    left_of,
     place_for,
     places,
     plan_walk,
     shorten,
+    standable,
 )
 
 TABLE = {"id": "table1", "x": 0.0, "y": 0.0, "yaw": 0, "length": 0.8, "width": 0.5, "toward": [3.5, 0.0]}
@@ -37,6 +40,28 @@ def test_the_place_taken_is_the_free_side_then_the_nearer() -> None:
     assert place_for(TABLE, (0.0, 0.0), (0.0, -3.0), []) == (0.0, -1.2)
     partner = [(0.1, -1.2)]  # stands at the near side: the walker goes round to the far one
     assert place_for(TABLE, (0.0, 0.0), (0.0, -3.0), partner) == (0.0, 1.2)
+
+
+def test_a_pair_walking_to_its_table_takes_one_side_each() -> None:
+    leader, assistant = (-3.0, 2.0), (-2.5, 2.5)  # both nearer the north side, neither at it
+    mine = place_for(TABLE, (0.0, 0.0), leader, [assistant], partner=assistant, leads=True)
+    theirs = place_for(TABLE, (0.0, 0.0), assistant, [leader], partner=leader, leads=False)
+    assert {mine, theirs} == {(0.0, 1.2), (0.0, -1.2)}
+    # both near one side (development room crowded-902): the nearer keeps it, the other goes round
+    leader, assistant = (-0.4, 1.3), (0.5, 1.4)
+    assert place_for(TABLE, (0.0, 0.0), leader, [assistant], partner=assistant, leads=True) == (0.0, 1.2)
+    assert place_for(TABLE, (0.0, 0.0), assistant, [leader], partner=leader, leads=False) == (0.0, -1.2)
+    # exactly as near either way: the leader's rule decides, the assistant takes the other side
+    assert place_for(TABLE, (0.0, 0.0), (-3.0, 0.0), [], partner=(3.0, 0.0), leads=True) == (0.0, 1.2)
+    assert place_for(TABLE, (0.0, 0.0), (3.0, 0.0), [], partner=(-3.0, 0.0), leads=False) == (0.0, -1.2)
+
+
+@given(points, points, points)
+def test_the_two_of_a_pair_never_take_the_same_side(leader: tuple[float, float], assistant: tuple[float, float],
+                                                    at: tuple[float, float]) -> None:
+    mine = place_for(TABLE, at, leader, [assistant], partner=assistant, leads=True)
+    theirs = place_for(TABLE, at, assistant, [leader], partner=leader, leads=False)
+    assert mine != theirs
 
 
 def test_a_way_goes_round_a_table_in_between() -> None:
@@ -91,12 +116,52 @@ def test_walks_far_apart_do_not_conflict_and_crossing_ones_do() -> None:
     assert conflict([(0.0, 0.0), (3.0, 0.0)], [(0.0, 2 * HALF - 0.01), (3.0, 2 * HALF - 0.01)])
 
 
+def test_what_is_left_of_a_way_starts_where_the_walker_is() -> None:
+    way = [(-3.0, 0.0), (0.0, 0.0), (0.0, 3.0)]
+    assert left_of(way, (-1.0, 0.1)) == [(-1.0, 0.1), (0.0, 0.0), (0.0, 3.0)]
+    assert left_of(way, (0.1, 2.0)) == [(0.1, 2.0), (0.0, 3.0)]
+    assert left_of([(1.0, 1.0)], (1.2, 1.0)) == [(1.2, 1.0)]
+    crossing = [(0.0, -3.0), (0.0, 3.0)]  # once past the crossing, the first no longer meets it
+    assert conflict(crossing, left_of([(-3.0, 0.0), (3.0, 0.0)], (-1.0, 0.0)))
+    assert not conflict(crossing, left_of([(-3.0, 0.0), (3.0, 0.0)], (1.0, 0.0)))
+
+
+@given(st.lists(points, min_size=2, max_size=5), points)
+def test_what_is_left_is_never_more_than_the_way(way: list[tuple[float, float]], at: tuple[float, float]) -> None:
+    left = left_of(way, at)
+    assert left[0] == at and left[1:] == way[len(way) - len(left) + 1:]
+
+
 @given(st.floats(0, 100), st.floats(0, 100), st.sampled_from(["r1", "r2", "r10"]), st.sampled_from(["r3", "r4"]))
 def test_exactly_one_of_two_walkers_goes_first(t1: float, t2: float, a: str, b: str) -> None:
-    assert goes_first((t1, a), (t2, b)) != goes_first((t2, b), (t1, a))
+    assert goes_first((t1, 0, a), (t2, 0, b)) != goes_first((t2, 0, b), (t1, 0, a))
+
+
+def test_in_a_packed_start_the_walker_with_no_robot_in_its_way_goes_first() -> None:
+    packed = {"r1": (-4.2, -2.7), "r2": (-3.4, -2.7), "r3": (-4.2, -1.9), "r4": (-3.4, -1.9)}
+    out = [(-4.2, -2.7), (0.5, 2.5)]  # r1, from the inner corner: straight through r4
+    free = [(-3.4, -1.9), (-1.5, 2.5)]  # r4, on the outside
+    assert crowd(out, [p for r, p in packed.items() if r != "r1"]) == 1
+    assert crowd(free, [p for r, p in packed.items() if r != "r4"]) == 0
+    assert goes_first((0.0, 0, "r4"), (0.0, 1, "r1"))
+    assert crowd([(0.0, 0.0), (3.0, 0.0)], [(1.5, 0.8), (-0.8, 0.0)]) == 0  # beside it, behind it
 
 
 def test_shortening_keeps_a_clear_way() -> None:
     scene = Scene(7.0, 5.0, (Rect(0.0, 0.0, 1.0, 0.0, 0.4, 0.25),))
     assert shorten([(-2.0, 0.0), (-1.0, 1.0), (0.0, 1.0), (1.0, 1.0), (2.0, 0.0)], scene) == \
         [(-2.0, 0.0), (-1.0, 1.0), (1.0, 1.0), (2.0, 0.0)]
+
+
+def test_a_place_beyond_a_wall_is_not_taken_both_robots_head_for_the_other_side() -> None:
+    # generated room open-537: a table 0.42 m from a wall along its long side; its far place is
+    # outside the room, and the pair's one-side-each rule sent one robot walking there for ever
+    table = {"yaw": 170.0}
+    at, room = (0.48, 1.25), (8.7, 4.2)
+    near = place_for(table, at, (0.0, 0.0), [])
+    assert standable(near, room) and not standable(places(table, at)[1], room)
+    for leads in (True, False):
+        me, mate = ((-2.8, -0.47), (-0.49, -1.26)) if leads else ((-0.49, -1.26), (-2.8, -0.47))
+        assert place_for(table, at, me, [mate], partner=mate, leads=leads, room=room) == near
+    middle = place_for(table, (0.0, 0.0), (0.0, -3.0), [])  # both places free: the rule as before
+    assert place_for(table, (0.0, 0.0), (0.0, -3.0), [], room=room) == middle
