@@ -18,6 +18,7 @@ from hfsm.runtime.calls import Calls
 from hfsm.runtime.cancel import Cancelling
 from hfsm.runtime.clock import RunClock
 from hfsm.runtime.core import FatalError
+from hfsm.runtime.enginestate import EngineState
 from hfsm.runtime.holds import Holds
 from hfsm.runtime.ledger import Ledger
 from hfsm.runtime.loop import Loop
@@ -32,20 +33,29 @@ from hfsm.runtime.timers import Timers
 from hfsm.trace import TraceSink
 from hfsm.world import World
 
-__all__ = ["Engine", "FatalError"]
+__all__ = ["Engine", "EngineState", "FatalError", "restore_engine"]
 
 
 class Engine:
-    def __init__(self, agents: list[Agent], world: World, dt: float, trace: TraceSink | None) -> None:
+    def __init__(
+        self,
+        agents: list[Agent],
+        world: World,
+        dt: float,
+        trace: TraceSink | None,
+        clock: RunClock | None = None,
+        team: Team | None = None,
+    ) -> None:
+        """`clock` and `team`: an engine's own, when it is made again from a snapshot."""
         self.agents = agents
         self.by_name = {a.name: a for a in agents}
         self.world: World = world
         self.trace = trace
-        clock = self.clock = RunClock(dt)
+        clock = self.clock = clock or RunClock(dt)
         for agent in agents:
             agent.clock = clock
             agent.radio = Radio("", tuple(a.name for a in agents if a is not agent), top=True)
-        self.team = Team(agents, world, clock)  # barriers (docs/REFERENCE.md#barriers)
+        self.team = team or Team(agents, world, clock)  # barriers (docs/REFERENCE.md#barriers)
         self.records = records_for(trace, clock)
         self.breaks: Any = None  # the breakpoints' sink (runtime.breaks.Breaks), when there are any
         ledger = self.ledger = Ledger(clock, self.records)
@@ -64,6 +74,20 @@ class Engine:
         regions.arcs, regions.loop = arcs, loop
         arcs.holds, arcs.regions, arcs.loop = holds, regions, loop
         mailbox.arcs, mailbox.holds = arcs, holds
+
+    # --- its state between ticks -----------------------------------------------------------------
+
+    def snapshot(self) -> EngineState:
+        """What changes between ticks (a view, not a copy); an engine writing a trace has none."""
+        if self.records is not None or self.breaks is not None:
+            raise ValueError("an engine that writes a trace or has breakpoints is not snapshotted")
+        return EngineState(
+            self.agents, self.world, self.clock, self.team, self.loop.running, self.holds.level,
+            self.holds.approved, self.mailbox.sent, [a.radio for a in self.agents],
+        )  # fmt: skip
+
+    def __reduce__(self) -> tuple[Any, tuple[EngineState]]:
+        return restore_engine, (self.snapshot(),)
 
     # --- the clock ---------------------------------------------------------------------------------
 
@@ -164,3 +188,14 @@ class Engine:
     def events(state: RState) -> list[str]:
         """The events whose arcs the operator may force in `state`."""
         return Holds.events(state)
+
+
+def restore_engine(state: EngineState) -> Engine:
+    """An engine in `state`, its parts made anew (the agents, their trees and the world are `state`'s)."""
+    engine = Engine(state.agents, state.world, state.clock.dt, None, state.clock, state.team)
+    engine.loop.running = state.running
+    engine.holds.level, engine.holds.approved = state.level, state.approved
+    engine.mailbox.sent = state.sent
+    for agent, radio in zip(state.agents, state.radios, strict=True):
+        agent.radio = radio
+    return engine

@@ -7,7 +7,7 @@ choice points of a run in the same order (`Counter.n`, kept in the world so it i
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
@@ -39,28 +39,48 @@ class Choice:
 
 class Decider(Protocol):
     def pick(
-        self, counter: Counter, tick: int, kind: str, what: str, options: Sequence[dict[str, Any]]
+        self,
+        counter: Counter,
+        tick: int,
+        kind: str,
+        what: str,
+        options: Sequence[dict[str, Any]],
+        deferred: Collection[int] = (),
     ) -> dict[str, Any]:
-        """One of `options` (the first is what a world without choices would do)."""
+        """One of `options` (the first is what a world without choices would do). A search may
+        leave the options numbered in `deferred` untried unless `Chooser.restore` asks for them."""
 
 
 @dataclass
 class Chooser:
-    """The search's decider: within one tick, takes `prefix[i]` at the i-th point, then the first."""
+    """The search's decider: within one tick, takes `prefix[i]` at the i-th point, then the first.
+
+    Options a point defers are not among `siblings()` but kept in `held`, for the search to run
+    when `restore` says so (docs/VERIFY.md, *Failures that change nothing*)."""
 
     prefix: Sequence[int] = ()
     taken: list[int] = field(default_factory=list)
     arities: list[int] = field(default_factory=list)
     made: list[Choice] = field(default_factory=list)
+    deferred: dict[int, Collection[int]] = field(default_factory=dict)  # by point
+    held: list[tuple[int, ...]] = field(default_factory=list)
+    restore: bool = False  # a run of this state ended an agent: the held prefixes must be run too
 
     def begin(self, prefix: Sequence[int]) -> None:
         self.prefix = prefix
         self.taken = []
         self.arities = []
         self.made = []
+        self.deferred = {}
 
     def pick(
-        self, counter: Counter, tick: int, kind: str, what: str, options: Sequence[dict[str, Any]]
+        self,
+        counter: Counter,
+        tick: int,
+        kind: str,
+        what: str,
+        options: Sequence[dict[str, Any]],
+        deferred: Collection[int] = (),
     ) -> dict[str, Any]:
         n = counter.n
         counter.n += 1
@@ -68,6 +88,8 @@ class Chooser:
             return options[0]
         i = len(self.taken)
         index = self.prefix[i] if i < len(self.prefix) else 0
+        if deferred:
+            self.deferred[i] = deferred
         self.taken.append(index)
         self.arities.append(len(options))
         chosen = options[index]
@@ -77,10 +99,11 @@ class Chooser:
 
     def siblings(self) -> list[tuple[int, ...]]:
         """The prefixes still to try after a run that took the first option past `prefix`."""
-        found = []
+        found: list[tuple[int, ...]] = []
         for i in range(len(self.prefix), len(self.taken)):
+            deferred = self.deferred.get(i, ())
             for j in range(1, self.arities[i]):
-                found.append((*self.taken[:i], j))
+                (self.held if j in deferred else found).append((*self.taken[:i], j))
         return found
 
 
@@ -91,7 +114,13 @@ class Schedule:
         self.by_n = {int(c["n"]): c for c in choices if c.get("kind") != "fail"}
 
     def pick(
-        self, counter: Counter, tick: int, kind: str, what: str, options: Sequence[dict[str, Any]]
+        self,
+        counter: Counter,
+        tick: int,
+        kind: str,
+        what: str,
+        options: Sequence[dict[str, Any]],
+        deferred: Collection[int] = (),
     ) -> dict[str, Any]:
         n = counter.n
         counter.n += 1

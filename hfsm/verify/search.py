@@ -132,6 +132,7 @@ class _Search:
             if live is not None:
                 self.live -= 1
             pending: list[tuple[int, ...]] = [()]
+            chooser.held, chooser.restore = [], False
             while pending:
                 chooser.begin(pending.pop())
                 if live is not None:  # the state itself, unused yet: no copy to make
@@ -142,6 +143,8 @@ class _Search:
                 pending.extend(chooser.siblings())
                 if not self.visit(engine, ended, index):
                     return self.done(False)
+                if not pending and chooser.restore and chooser.held:
+                    pending, chooser.held = chooser.held, []
         return self.done(True)
 
     def _late(self) -> bool:

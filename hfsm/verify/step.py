@@ -3,18 +3,19 @@ chosen for the tick, then what arrives, then each agent's turn."""
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Sequence
 from dataclasses import dataclass
 from itertools import combinations
 from typing import Any
 
-from hfsm.runtime.agent import Agent
+from hfsm.runtime.agent import Agent, frames
 from hfsm.runtime.engine import Engine, FatalError
 from hfsm.runtime.failing import FAIL_REASON, fail
 from hfsm.runtime.program import Program
-from hfsm.runtime.run import RunOptions, _next_tick, _start
+from hfsm.runtime.run import RunOptions, _next_tick, _start, _wake
 from hfsm.runtime.scopes import run_under
-from hfsm.verify.choices import Decider
+from hfsm.verify.choices import Chooser, Decider
 from hfsm.verify.radio import ChoosingWorld
 
 
@@ -24,6 +25,7 @@ class _NoFailures:
 
 
 NO_FAILURES: Any = _NoFailures()
+DEFER_FAILURES = True  # put off failing an agent whose turn changes nothing (False: a test's baseline)
 
 
 @dataclass
@@ -55,14 +57,18 @@ def first_state(
 
 def next_state(engine: Engine, world: ChoosingWorld, decider: Decider, last: int) -> Ended | None:
     """Run the next tick in which something can happen; why the run cannot go on, or None."""
+    before, wake = engine.tick, engine.clock.wake
     following = _next_tick(engine, NO_FAILURES, None)
     if following is None:
         return Ended("blocked", "blocked forever")
     if following > last:
         return Ended("bound", "still running at the bound")
     engine.tick = world.tick = following
-    _fail_some(engine, world, decider)
+    if world.fail_left > 0:
+        some = None if wake or not DEFER_FAILURES else acting(engine, world, before, following)
+        _fail_some(engine, world, decider, some)
     arrived = world.collect(following)
+    running = engine.running
     try:
         if arrived:
             engine.deliver(arrived)
@@ -72,11 +78,32 @@ def next_state(engine: Engine, world: ChoosingWorld, decider: Decider, last: int
                 engine.step(agent.root)  # type: ignore[arg-type]
     except FatalError as exc:
         return Ended("error", exc.args[0], exc.agent)
+    if engine.running < running and isinstance(decider, Chooser):
+        decider.restore = True  # an agent ended: a failure deferred in this tick may not come later
     _forget(engine)
     return None
 
 
-def _fail_some(engine: Engine, world: ChoosingWorld, decider: Decider) -> None:
+def acting(engine: Engine, world: ChoosingWorld, before: int, tick: int) -> set[str]:
+    """The running agents whose turn in `tick` (the one after `before`) may do anything: something
+    of theirs is due, something arrives for them, or they wait in a barrier. The others' turns
+    change nothing (the engine skips ticks in which no agent has anything due), so failing one of
+    them now is failing it at its next tick that does (docs/VERIFY.md, *Failures that change
+    nothing*)."""
+    found = {w.agent for w in engine.team.waiting}
+    found.update(m.to for arrives, _, m in world.flying if arrives <= tick)
+    for agent in engine.agents:
+        root = agent.root
+        if agent.result is None and root is not None and _wake(root, before, sys.maxsize) <= tick:
+            found.add(agent.name)
+    return found
+
+
+def _fail_some(
+    engine: Engine, world: ChoosingWorld, decider: Decider, acting: set[str] | None = None
+) -> None:
+    """Choose which running agents fail now (at least one keeps running); failing one that is not
+    `acting` (None: all are) is a deferred option."""
     if world.fail_left <= 0:
         return
     running = [a.name for a in engine.agents if a.result is None]
@@ -86,7 +113,8 @@ def _fail_some(engine: Engine, world: ChoosingWorld, decider: Decider) -> None:
     if len(subsets) == 1:
         return
     options = [{"agents": list(s)} for s in subsets]
-    chosen = decider.pick(_Uncounted(), engine.tick, "fail", "agents that fail now", options)
+    deferred = () if acting is None else [i for i, s in enumerate(subsets) if not acting.issuperset(s)]
+    chosen = decider.pick(_Uncounted(), engine.tick, "fail", "agents that fail now", options, deferred)
     for name in chosen["agents"]:
         world.fail_left -= 1
         fail(engine, engine.by_name[name], FAIL_REASON)
@@ -106,6 +134,9 @@ def _forget(engine: Engine) -> None:
         inputs = agent.inputs
         inputs._declared = None  # read again from the world when asked
         inputs._tick = -1
+        if agent.result is None and agent.root is not None:
+            for frame in frames(agent.root):
+                frame._scope = frame._prefix = None  # made again when asked (a tenth of a copy's bytes)
 
 
 def running(agents: Sequence[Agent]) -> list[Agent]:

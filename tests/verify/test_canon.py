@@ -44,9 +44,10 @@ def test_two_paths_to_one_situation_are_explored_once(
 
 
 COUNTS = [  # states explored with keys as bytes, and by value (a state's first successor runs on it, not on
-    # a copy, so its bytes may differ from a copy's: quorum 264 by bytes, where copies only gave 255)
-    ("handshake", ["--agents", "a,b", "--loss", "1", "--fail", "1"], 847, 689),
-    ("quorum", ["--agents", "a,b,c", "--goal", "success", "--loss", "1", "--fail", "1"], 264, 211),
+    # a copy, so its bytes may differ from a copy's: quorum 264 by bytes, where copies only gave 255);
+    # failures of agents whose turn changes nothing put off: handshake 847 and 689, quorum 264 and 211 before
+    ("handshake", ["--agents", "a,b", "--loss", "1", "--fail", "1"], 845, 687),
+    ("quorum", ["--agents", "a,b,c", "--goal", "success", "--loss", "1", "--fail", "1"], 224, 201),
     ("ask_until_answered", ["--agents", "a,b", "--goal", "success", "--loss", "1"], 14, 11),
     ("watch_join", ["--goal", "success"], 20, 20),
 ]
