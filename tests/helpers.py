@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import contextlib
 import importlib.util
+import json
 import re
 import signal
 import sys
@@ -38,6 +39,21 @@ def hfsm_run(capsys: pytest.CaptureFixture[str], *argv: object) -> tuple[int, st
     code = main([str(a) for a in argv])
     out, err = capsys.readouterr()
     return code, out, err
+
+
+def sim_json(
+    capsys: pytest.CaptureFixture[str], machine: Path, scenario: Path, params: Sequence[str], *,
+    seed: int = 0, max_time: float = 300.0,
+) -> dict[str, Any]:
+    """`hfsm-run MACHINE --scenario SCENARIO --json` with each `--param`, no video: its JSON result."""
+    argv: list[object] = [machine, "--scenario", scenario, "--seed", seed, "--json", "--no-video", "--quiet",
+                          "--progress", 0, "--max-time", max_time]
+    for param in params:
+        argv += ["--param", param]
+    code, out, _ = hfsm_run(capsys, *argv)
+    assert code == 0
+    result: dict[str, Any] = json.loads(out)
+    return result
 
 
 def write(folder: Path, name: str, text: str) -> Path:

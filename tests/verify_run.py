@@ -10,6 +10,8 @@ import pytest
 
 from hfsm.cli import run as run_cli
 from hfsm.cli import verify as verify_cli
+from hfsm.verify.choices import Chooser
+from hfsm.verify.step import next_state
 
 DATA = Path(__file__).parent / "verify" / "data"
 MACHINES = Path(__file__).parents[1] / "machines"
@@ -30,3 +32,18 @@ def replay(file: Path, counterexample: Path, trace: Path) -> int:
     return run_cli.main(
         [str(file), "--world", "none", "--replay", str(counterexample), "--trace", str(trace), "--quiet"]
     )
+
+
+def prefixes(found: Any, data: bytes) -> list[tuple[int, ...]]:
+    """Every run of one state's tick (`data`, as `found.snaps` dumps it): the choices' prefixes."""
+    chooser: Chooser = found.chooser
+    done: list[tuple[int, ...]] = []
+    pending: list[tuple[int, ...]] = [()]
+    while pending:
+        prefix = pending.pop()
+        chooser.begin(prefix)
+        engine = found.snaps.load(data)
+        next_state(engine, engine.world, chooser, 10**9)
+        pending.extend(chooser.siblings())
+        done.append(prefix)
+    return done

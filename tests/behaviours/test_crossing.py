@@ -5,12 +5,11 @@ where it was going. Blind (`look` 0), the same walks touch."""
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 from typing import Any
 
 import pytest
-from helpers import hfsm_run
+from helpers import sim_json
 
 DATA = Path(__file__).parent / "data" / "crossing"
 CROWD = ("ahead=[-3.0, 6.0]", "mirror=[-1.0, -1.0]", "cross=[-2.0, 2.0]")  # the grid turned a quarter
@@ -25,15 +24,8 @@ CASES = {
 
 def walk(capsys: pytest.CaptureFixture[str], scenario: str, params: tuple[str, ...], look: float,
          seed: int = 0) -> dict[str, Any]:
-    argv: list[object] = [DATA / "walk_to.yaml", "--scenario", DATA / f"{scenario}.yaml", "--seed", seed,
-                          "--json", "--no-video", "--quiet", "--progress", 0, "--max-time", 160,
-                          "--param", f"look={look}"]
-    for param in params:
-        argv += ["--param", param]
-    code, out, _ = hfsm_run(capsys, *argv)
-    assert code == 0
-    result: dict[str, Any] = json.loads(out)
-    return result
+    machine, room = DATA / "walk_to.yaml", DATA / f"{scenario}.yaml"
+    return sim_json(capsys, machine, room, (f"look={look}", *params), seed=seed, max_time=160)
 
 
 @pytest.mark.slow

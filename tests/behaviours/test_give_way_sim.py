@@ -11,21 +11,14 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from helpers import hfsm_run
+from helpers import sim_json
 
 DATA = Path(__file__).parent / "data" / "crossing"
 PACKED = {"r1": [-4.2, -2.7], "r2": [-3.4, -2.7], "r3": [-4.2, -1.9], "r4": [-3.4, -1.9]}
 
 
 def run(capsys: pytest.CaptureFixture[str], scenario: str, *params: str) -> dict[str, Any]:
-    argv: list[object] = [DATA / "give_way.yaml", "--scenario", DATA / f"{scenario}.yaml", "--seed", 0,
-                          "--json", "--no-video", "--quiet", "--progress", 0, "--max-time", 300]
-    for param in params:
-        argv += ["--param", param]
-    code, out, _ = hfsm_run(capsys, *argv)
-    assert code == 0
-    result: dict[str, Any] = json.loads(out)
-    return result
+    return sim_json(capsys, DATA / "give_way.yaml", DATA / f"{scenario}.yaml", params)
 
 
 @pytest.mark.slow

@@ -11,14 +11,13 @@ from typing import Any
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from verify_run import DATA, verify
+from verify_run import DATA, prefixes, verify
 
 from hfsm.load import load
 from hfsm.runtime.agent import Frame
 from hfsm.verify import search, snapshot
 from hfsm.verify.build import unobserved
 from hfsm.verify.canon import TICKS, Keys
-from hfsm.verify.choices import Chooser
 from hfsm.verify.step import next_state
 
 
@@ -180,7 +179,7 @@ def test_a_situation_later_in_time_has_the_same_key_and_the_same_futures(
     _shift(late, by, found.key.shared)
     assert found.key(early) == found.key(late)
     chooser = found.chooser
-    for prefix in itertools.islice(_prefixes(found, data), 8):
+    for prefix in itertools.islice(prefixes(found, data), 8):
         early, late = found.snaps.load(data), found.snaps.load(data)
         _shift(late, by, found.key.shared)
         results = []
@@ -191,20 +190,6 @@ def test_a_situation_later_in_time_has_the_same_key_and_the_same_futures(
         assert results[0] == results[1]
         assert late.tick == early.tick + by
         assert found.key(early) == found.key(late)
-
-
-def _prefixes(found: Any, data: bytes) -> list[tuple[int, ...]]:
-    chooser: Chooser = found.chooser
-    done: list[tuple[int, ...]] = []
-    pending: list[tuple[int, ...]] = [()]
-    while pending:
-        prefix = pending.pop()
-        chooser.begin(prefix)
-        engine = found.snaps.load(data)
-        next_state(engine, engine.world, chooser, 10**9)
-        pending.extend(chooser.siblings())
-        done.append(prefix)
-    return done
 
 
 def test_a_situation_met_again_later_is_explored_again(

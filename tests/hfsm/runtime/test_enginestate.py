@@ -12,7 +12,7 @@ from typing import Any
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from verify_run import DATA, verify
+from verify_run import DATA, prefixes, verify
 
 from hfsm.builtins.barrier import Barrier
 from hfsm.runtime.clock import RunClock
@@ -114,7 +114,7 @@ def test_restoring_a_snapshot_gives_the_same_engine_and_the_same_futures(
     assert restored.team is engine.team and restored.clock is engine.clock
     assert [a.radio for a in restored.agents] == state.radios
     chooser: Chooser = found.chooser
-    for prefix in itertools.islice(_prefixes(found, data), 6):
+    for prefix in itertools.islice(prefixes(found, data), 6):
         after = []
         for make in (
             lambda: found.snaps.load(data),
@@ -126,20 +126,6 @@ def test_restoring_a_snapshot_gives_the_same_engine_and_the_same_futures(
             ended = next_state(one, one.world, chooser, 10**9)
             after.append((ended and ended.why, [c.choice for c in chooser.made], found.snaps.dump(one)))
         assert after[0] == after[1] == after[2]
-
-
-def _prefixes(found: Any, data: bytes) -> list[tuple[int, ...]]:
-    chooser: Chooser = found.chooser
-    done: list[tuple[int, ...]] = []
-    pending: list[tuple[int, ...]] = [()]
-    while pending:
-        prefix = pending.pop()
-        chooser.begin(prefix)
-        engine = found.snaps.load(data)
-        next_state(engine, engine.world, chooser, 10**9)
-        pending.extend(chooser.siblings())
-        done.append(prefix)
-    return done
 
 
 def test_an_engine_writing_a_trace_has_no_snapshot() -> None:
