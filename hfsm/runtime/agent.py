@@ -86,7 +86,7 @@ class Frame:
         self.params = params
         self.vars = machine.fresh_vars() if machine.var_init else {}
         self.vars_shown = not self.vars or machine.untraced.issuperset(self.vars)
-        self.vars_new: set[str] | None = None  # the vars changed since the trace last showed them (None: all)
+        self.vars_new: set[str] | None = None  # while not vars_shown: the vars changed since (None: all)
         self.agent = agent
         self.up = up
         self._scope: Scope | None = None

@@ -18,10 +18,11 @@ from hfsm.runtime.timers import Timers, Where
 
 def save(frame: Frame, names: tuple[tuple[str, str], ...], outputs: dict[str, Any]) -> None:
     """A state's `save`: the callee's outputs it names, into the machine's vars."""
-    saved = [var for var, output in names if output in outputs]
+    saved = []
     for var, output in names:
         if output in outputs:
             frame.vars[var] = outputs[output]
+            saved.append(var)
     if saved:
         frame.changed(saved)
 
