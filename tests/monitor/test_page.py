@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import subprocess
 import sys
@@ -20,14 +21,23 @@ ROOT = Path(__file__).resolve().parents[2]
 PING_PONG = ROOT / "examples" / "ping_pong.yaml"
 
 
+@contextlib.contextmanager
+def _served(machine: Path, trace: Path) -> Iterator[Server]:
+    """The monitor replaying `trace`, drawn from `machine`'s library, stopped afterwards."""
+    server = Server(Hub(read_trace(trace)), drawings(machine, []), trace.name)
+    server.start()
+    try:
+        yield server
+    finally:
+        server.stop()
+
+
 @pytest.fixture
 def ping_pong(tmp_path: Path) -> Iterator[Server]:
     trace = tmp_path / "pp.jsonl"
     assert run_main([str(PING_PONG), "--agents", "a,b", "--trace", str(trace), "--quiet"]) == 0
-    server = Server(Hub(read_trace(trace)), drawings(PING_PONG, []), "pp.jsonl")
-    server.start()
-    yield server
-    server.stop()
+    with _served(PING_PONG, trace) as server:
+        yield server
 
 
 def _open(page: Any, url: str) -> None:
@@ -123,16 +133,12 @@ def test_a_barrier_shows_while_waiting_and_who_it_heard_once_passed(page: Any, t
         "  meet:\n    do: barrier\n    with: {name: meet}\n    timer: 10\n    on: {passed: together, timeout: alone}\n")
     trace = tmp_path / "meet.jsonl"
     assert run_main([str(meet), "--agents", "a,b", "--trace", str(trace), "--quiet"]) == 0
-    server = Server(Hub(read_trace(trace)), drawings(meet, []), trace.name)
-    server.start()
-    try:
+    with _served(meet, trace) as server:
         _open(page, server.url)
         page.evaluate("window.hfsm.seek(0.5)")
         assert "waiting at a barrier" in page.inner_text('.agent[data-agent="a"] details[data-key="meet/meet"]')
         page.evaluate("window.hfsm.seek(2)")
         assert "last barrier passed at 1.05 s (meet), with b" in page.inner_text('.agent[data-agent="a"] .mailbox')
-    finally:
-        server.stop()
 
 
 def _room_trace(path: Path) -> None:
@@ -160,9 +166,7 @@ def _pixel(page: Any, x: int, y: int) -> list[int]:
 def test_the_room_view_draws_claimed_corridors_beliefs_and_what_each_robot_sensed(page: Any, tmp_path: Path) -> None:
     trace = tmp_path / "room.jsonl"
     _room_trace(trace)
-    server = Server(Hub(read_trace(trace)), drawings(PING_PONG, []), trace.name)
-    server.start()
-    try:
+    with _served(PING_PONG, trace) as server:
         _open(page, server.url)
         page.evaluate("window.hfsm.seek(1)")
         # 6 x 4 m on 320 px: 50 px a metre, the room's centre at (160, 160)
@@ -178,8 +182,6 @@ def test_the_room_view_draws_claimed_corridors_beliefs_and_what_each_robot_sense
         circle = [_pixel(page, x, y) for x in range(113, 118) for y in (109, 110, 111)]
         assert any(p[2] > 150 and p[1] > 130 for p in circle), circle
         assert not (believed[2] > 150 and believed[1] > 130)
-    finally:
-        server.stop()
 
 
 def test_a_status_kept_last_shows_once_in_the_mailbox_and_every_copy_as_received(page: Any, tmp_path: Path) -> None:
@@ -193,13 +195,9 @@ def test_a_status_kept_last_shows_once_in_the_mailbox_and_every_copy_as_received
         "  rest:\n    do: wait\n    with: {seconds: 1}\n    on: {done: done}\n")
     trace = tmp_path / "talk.jsonl"
     assert run_main([str(talk), "--agents", "a,b", "--trace", str(trace), "--quiet"]) == 0
-    server = Server(Hub(read_trace(trace)), drawings(talk, []), trace.name)
-    server.start()
-    try:
+    with _served(talk, trace) as server:
         _open(page, server.url)
         page.evaluate("window.hfsm.seek(0.5)")
         assert page.inner_text('.agent[data-agent="b"] .mailbox') == "mailbox: status from a"
         fates = page.evaluate("window.hfsm.replay.fates().map(m => m.got.b)")
         assert fates == [0.05, 0.1, 0.15]
-    finally:
-        server.stop()

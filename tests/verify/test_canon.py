@@ -11,7 +11,7 @@ from typing import Any
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from verify_run import DATA, prefixes, verify
+from verify_run import DATA, NoCapture, prefixes, verify
 
 from hfsm.load import load
 from hfsm.runtime.agent import Frame
@@ -127,17 +127,8 @@ class Reached(tuple[list[bytes], Any]):
 
 @pytest.fixture(scope="module")
 def reached(tmp_path_factory: pytest.TempPathFactory) -> Reached:
-    capsys: Any = _NoCapture()
+    capsys: Any = NoCapture()
     return Reached(_states(capsys, tmp_path_factory.mktemp("canon")))
-
-
-class _NoCapture:
-    def readouterr(self) -> Any:
-        class Out:
-            out = '{"verdict": "ok"}'
-            err = ""
-
-        return Out()
 
 
 def test_a_copy_has_the_key_of_its_original(reached: tuple[list[bytes], Any]) -> None:

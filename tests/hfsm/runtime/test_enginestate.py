@@ -12,7 +12,7 @@ from typing import Any
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from verify_run import DATA, prefixes, verify
+from verify_run import DATA, NoCapture, prefixes, verify
 
 from hfsm.builtins.barrier import Barrier
 from hfsm.runtime.clock import RunClock
@@ -31,15 +31,6 @@ RUNS = [  # a barrier of three, messages late and lost, a failure; scoped pairs
 ]
 
 
-class _NoCapture:
-    def readouterr(self) -> Any:
-        class Out:
-            out = '{"verdict": "ok"}'
-            err = ""
-
-        return Out()
-
-
 def _reached(folder: Path) -> list[tuple[bytes, Any]]:
     """States the search reaches (as its copies' bytes), each with the search that made it."""
     found: list[tuple[bytes, Any]] = []
@@ -54,7 +45,7 @@ def _reached(folder: Path) -> list[tuple[bytes, Any]]:
         patch.setattr(search._Search, "visit", recording)
         patch.setattr(snapshot.Snapshots, "close", lambda self: None)
         for file, args in RUNS:
-            verify(_NoCapture(), DATA / file, *args, "--max-states", "200", out=folder / "ce.jsonl")  # type: ignore[arg-type]
+            verify(NoCapture(), DATA / file, *args, "--max-states", "200", out=folder / "ce.jsonl")  # type: ignore[arg-type]
     return found
 
 
