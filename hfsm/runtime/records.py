@@ -93,7 +93,8 @@ class Records:
         if frame.vars_shown:
             return {}
         frame.vars_shown = True
-        new, values, quiet = frame.vars_new, frame.vars, frame.machine.untraced
+        new, frame.vars_new = frame.vars_new, None  # None while shown: a copy's bytes stay the same
+        values, quiet = frame.vars, frame.machine.untraced
         if new is None:
             return {"vars": {k: v for k, v in values.items() if k not in quiet} if quiet else dict(values)}
         return {"vars": {k: values[k] for k in values if k in new}}
