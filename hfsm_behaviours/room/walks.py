@@ -7,7 +7,10 @@ there is a shortest path on a grid of the room (networkx A*) that keeps `BODY` m
 `BODY` m off every table's top, `KEEP` m off every robot known to stand still (where it last said it
 was: failed robots, waiting spares, pairs at work), and costs `CORRIDOR` times more inside a table's
 claimed carry corridor (a pair may carry through it). It is then shortened where a straight line
-stays as clear.
+stays as clear. Where no way keeps `KEEP` m off the robots, one keeping `TIGHT` m is taken; where
+none does either (a robot hemmed in by a table, a wall and robots standing at work), the walker has
+no way yet and waits for the others to move (machines/room_carry.yaml's `boxed`), never walking
+straight through them.
 
 Right of way: a walker says its path and, as it walks, where it is; two walkers whose paths come
 within `2 * HALF` m of each other do not walk at once: the one that said its walk first (then the
@@ -36,6 +39,7 @@ Point = tuple[float, float]
 CELL = 0.25  # metres between grid nodes
 BODY = 0.4  # metres from a walker's centre to a wall or a table's top, at least
 KEEP = 0.8  # metres from a walker's centre to a robot standing still, at least
+TIGHT = 0.6  # the same where no way keeps KEEP: a body's width and a little, never less
 CORRIDOR = 4.0  # a metre walked in a claimed corridor costs this many
 GAP = 1.2  # metres from a table's centre line to a robot's place beside it
 HALF = 0.45  # half the width of the strip a walker sweeps
@@ -52,13 +56,14 @@ class Scene:
     tables: tuple[Rect, ...] = ()
     corridors: tuple[Rect, ...] = ()
     robots: tuple[Point, ...] = ()
+    keep: float = KEEP
 
     def blocked(self, p: Point) -> bool:
         if abs(p[0]) > self.width / 2 - BODY or abs(p[1]) > self.depth / 2 - BODY:
             return True
         if any(t.contains(p, BODY) for t in self.tables):
             return True
-        return any(math.dist(p, r) < KEEP for r in self.robots)
+        return any(math.dist(p, r) < self.keep for r in self.robots)
 
     def in_corridor(self, p: Point) -> bool:
         return any(c.contains(p) for c in self.corridors)

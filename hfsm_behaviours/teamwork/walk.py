@@ -12,6 +12,7 @@ from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.room.claims import footprint
 from hfsm_behaviours.room.frames import to_local, to_room
 from hfsm_behaviours.room.walks import (
+    TIGHT,
     Point,
     Scene,
     conflict,
@@ -42,18 +43,20 @@ def _scene(tables: dict[str, Any], done: list[Any], seen: dict[str, Any], robots
     return Scene(width, depth, tuple(tops), tuple(lanes), tuple(robots))
 
 
-@primitive(outcomes=["walk", "here"], outputs=["path", "walk", "face", "length", "standing"])
+@primitive(outcomes=["walk", "here", "boxed"], outputs=["path", "walk", "face", "length", "standing"])
 def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose: dict[str, Any],
                tables: dict[str, Any], room: dict[str, Any], done: list[Any] | None = None,
                seen: dict[str, Any] | None = None, where: dict[str, Any] | None = None,
-               starts: dict[str, Any] | None = None, near: float = 0.8) -> Outcome:
+               starts: dict[str, Any] | None = None, near: float = 0.8, wait: bool = False) -> Outcome:
     """The way to this robot's place beside its table (`job`: table, at), planned round the tables,
     their claimed corridors and the robots standing where they last said they were (`where`: {robot:
     [x, y]}, room frame; else where they started, `starts`: {robot: {x, y}}); `here` when the robot
     is within `near` m of that place. `path`: the waypoints in its own start frame; `walk`: where it
     stands then the waypoints, in the room's frame (what it says to the other walkers); `face`: the
     table, in its own start frame; `length`: the way's metres (0 when here); `standing`: where the
-    other robots stand as it knows it ({robot: [x, y]}, room frame: for room_give_way)."""
+    other robots stand as it knows it ({robot: [x, y]}, room frame: for room_give_way). Where no way
+    keeps `walks.TIGHT` m off the robots standing either, `boxed` with `wait` (the robot waits for
+    them to move and plans again), else the straight line to its place."""
     me_local = [float(pose["x"]), float(pose["y"])]
     x, y = to_room(start, me_local)
     me = (x, y)
@@ -72,7 +75,10 @@ def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
     rest = {k: v for k, v in tables.items() if k != str(job["table"])}
     scene = _scene(rest, done or [], seen or {}, others, room)
     scene = replace(scene, tables=(*scene.tables, footprint(table, 0.0, at)))
-    points = plan_walk(scene, me, goal) or [goal]
+    points = plan_walk(scene, me, goal) or plan_walk(replace(scene, keep=TIGHT), me, goal)
+    if points is None and wait:
+        return Outcome("boxed", path=[], walk=[], face=to_local(start, at), length=0.0, standing={})
+    points = points or [goal]
     length = sum(math.dist(a, b) for a, b in zip([me, *points], points, strict=False))
     return Outcome("walk", path=[to_local(start, p) for p in points], face=to_local(start, at),
                    walk=[[round(p[0], 4), round(p[1], 4)] for p in [me, *points]], length=round(length, 3),

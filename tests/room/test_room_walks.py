@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from dataclasses import replace
 
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -12,6 +13,7 @@ from hfsm_behaviours.room.claims import Rect, footprint
 from hfsm_behaviours.room.walks import (
     HALF,
     KEEP,
+    TIGHT,
     Scene,
     conflict,
     corridor,
@@ -165,3 +167,21 @@ def test_a_place_beyond_a_wall_is_not_taken_both_robots_head_for_the_other_side(
         assert place_for(table, at, me, [mate], partner=mate, leads=leads, room=room) == near
     middle = place_for(table, (0.0, 0.0), (0.0, -3.0), [])  # both places free: the rule as before
     assert place_for(table, (0.0, 0.0), (0.0, -3.0), [], room=room) == middle
+
+
+def test_where_no_way_keeps_keep_a_tight_one_is_taken_and_none_through_robots() -> None:
+    # a corridor 1.3 m wide between two tables, a robot standing at its middle: KEEP closes it
+    tables = (Rect(0.0, 1.4, 1.0, 0.0, 2.0, 0.3), Rect(0.0, -1.4, 1.0, 0.0, 2.0, 0.3))
+    scene = Scene(8.0, 5.0, tables, (), ((0.0, 0.2),))
+    start, goal = (-3.0, 0.0), (3.0, 0.0)
+    assert plan_walk(scene, start, goal) is None
+    tight = replace(scene, keep=TIGHT)
+    way = plan_walk(tight, start, goal)
+    assert way is not None
+    line = [start, *way]
+    for a, b in itertools.pairwise(line):
+        for k in range(21):
+            p = (a[0] + (b[0] - a[0]) * k / 20, a[1] + (b[1] - a[1]) * k / 20)
+            assert math.dist(p, (0.0, 0.2)) >= TIGHT - 0.01
+    # a second robot closes it even at TIGHT: no way at all (the walker waits, machines/room_carry.yaml)
+    assert plan_walk(replace(tight, robots=((0.0, 0.2), (0.0, -0.6))), start, goal) is None
