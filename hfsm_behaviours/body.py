@@ -8,7 +8,6 @@ if the interpreter cancels the primitive meanwhile, `Cancelled` comes out of the
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 
 import numpy as np
 
@@ -16,48 +15,19 @@ from hfsm.primitive import Context
 from hfsm_sim import CameraModel, Robot
 from hfsm_sim.profile import MotionProfile
 
-WAIT_EVERY = 0.25  # seconds between two looks of a wary move (a NAO's sonars read at ~10 Hz)
-PATIENCE = 15.0  # seconds a wary move waits in all for its way to clear before it goes on
-
 
 class Body:
-    """`blocked` (heading rad, body frame, left + -> bool): with it, a walk or a sidestep is *wary*:
-    it looks every WAIT_EVERY s and stands still while something is in its way at that heading (the
-    time it covers is only the time it moved), PATIENCE s at most in all, then goes on as before."""
-
-    def __init__(self, ctx: Context, blocked: Callable[[float], bool] | None = None) -> None:
+    def __init__(self, ctx: Context) -> None:
         self.ctx = ctx
         self.robot: Robot = ctx.robot
         self.motion: MotionProfile = self.robot.profile  # its own speeds: timed moves cover their spans
-        self.blocked = blocked
-        self.waited = 0.0
 
     def _hold(self, forward: float, sideways: float, turn: float, seconds: float) -> None:
         if seconds <= 0:
             return
-        if self.blocked is not None and (forward != 0.0 or sideways != 0.0):
-            self._wary(forward, sideways, turn, seconds)
-            return
         self.robot.set_velocity(forward, sideways, turn)
         try:
             self.ctx.wait(seconds)
-        finally:
-            self.robot.stop()
-
-    def _wary(self, forward: float, sideways: float, turn: float, seconds: float) -> None:
-        assert self.blocked is not None
-        heading, left = math.atan2(sideways, forward), seconds
-        try:
-            while left > 1e-9:
-                if self.waited < PATIENCE and self.blocked(heading):
-                    self.robot.stop()
-                    self.ctx.wait(WAIT_EVERY)
-                    self.waited += WAIT_EVERY
-                    continue
-                self.robot.set_velocity(forward, sideways, turn)
-                span = min(WAIT_EVERY, left)
-                self.ctx.wait(span)
-                left -= span
         finally:
             self.robot.stop()
 

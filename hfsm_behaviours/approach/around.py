@@ -6,7 +6,6 @@ from __future__ import annotations
 import math
 
 from hfsm.primitive import Context, Outcome, primitive
-from hfsm_behaviours.approach.ahead import WARY, in_way
 from hfsm_behaviours.approach.frames import Point, Side, from_table_frame, nearest_side, sides, table_frame
 from hfsm_behaviours.approach.navigate import (
     Look,
@@ -113,8 +112,8 @@ def go_to_opposite_side_of_table(
     `table` ([x, y], own start frame): the table seen nearest it, within `gate` m. With a
     `leader_colour` (>= 0, as the leader said it): only a robot of that colour is the leader, and
     with a `table` too, the one of that colour nearest the table (colours repeat beyond ten)."""
+    body = Body(ctx)
     named_at = named(table)
-    body = Body(ctx, in_way(ctx, WARY) if named_at is not None else None)
     look = Look(pitch=pitch, spread=spread, target=named_at, gate=gate)
     if named_at is not None:
         x, y, _ = body.odometry()

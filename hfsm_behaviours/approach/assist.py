@@ -5,7 +5,6 @@ from __future__ import annotations
 import math
 
 from hfsm.primitive import Context, Outcome, primitive
-from hfsm_behaviours.approach.ahead import WARY, in_way
 from hfsm_behaviours.approach.frames import bearing_to, body_to_odom
 from hfsm_behaviours.approach.sight import leader_behind_table, named, own_colour, scan_for_robot, see_table
 from hfsm_behaviours.body import Body
@@ -45,10 +44,9 @@ def clear_way(ctx: Context, *, leader_bearing: float = 0.0, leader_distance: flo
     `sideways` rad from straight back towards the side away from the leader
     (`leader_distance` < 0: not seen, straight back); then face the table again. With a
     `leader_colour` (>= 0), only a robot of that colour is the leader; with a `table` too, the
-    one of that colour nearest the table, and its walk stands still while a robot its range finder
-    sees is in its way (approach.ahead)."""
+    one of that colour nearest the table."""
+    body = Body(ctx)
     near = named(table)
-    body = Body(ctx, in_way(ctx, WARY) if near is not None else None)
     seen = see_table(body, 0.0, pitch)
     both_seen = leader_distance >= 0 and seen is not None
     if both_seen and leader_behind_table(body, pitch, own_colour(body), leader_colour, near):

@@ -13,7 +13,6 @@ import math
 import numpy as np
 
 from hfsm.primitive import Context, Outcome, primitive
-from hfsm_behaviours.approach.ahead import WARY, in_way
 from hfsm_behaviours.approach.frames import Point, bearing_to, body_to_odom, distance, odom_to_body
 from hfsm_behaviours.approach.sight import named, see_named_table
 from hfsm_behaviours.body import Body
@@ -83,11 +82,10 @@ def go_to_table(ctx: Context, *, margin: float = 0.2, near: float = 0.8, pitch: 
     """Walk to the nearest corner, keeping it within `margin` of the image centre; stop when
     the table's lowest pixel is more than `near` down the image. `lost`: no table in view.
     With a `table` ([x, y], own start frame): the table seen nearest it within `gate` m, until
-    its nearest corner is as near as the floor `near` down the image, its moves standing still while
-    a robot its range finder sees is in their way (approach.ahead)."""
-    target = named(table)
-    body = Body(ctx, in_way(ctx, WARY) if target is not None else None)
+    its nearest corner is as near as the floor `near` down the image."""
+    body = Body(ctx)
     body.look(0.0, pitch)
+    target = named(table)
     if target is not None:
         return go_to_named_table(ctx, body, target, gate, margin, near, pitch, period, gain)
     corner: Point | None = None

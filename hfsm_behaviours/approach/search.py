@@ -5,10 +5,10 @@ from __future__ import annotations
 import math
 
 from hfsm.primitive import Context, Outcome, primitive
-from hfsm_behaviours.approach.ahead import blocks, sensed, turned
 from hfsm_behaviours.approach.frames import bearing_to
 from hfsm_behaviours.approach.sight import ground_distance, named, see_named_table, see_table
 from hfsm_behaviours.body import Body
+from hfsm_behaviours.drive.things import BEAMS, things
 
 
 @primitive(outcomes=["seen", "not_seen"], outputs=["bearing", "distance"], world="sim")
@@ -50,16 +50,16 @@ def walk_randomly(ctx: Context, *, distance: float = 1.0, step: float = 0.25, lo
     body = Body(ctx)
     turn = ctx.rng.uniform(-math.pi, math.pi)
     if look > 0.0:
-        seen = sensed(ctx, look)
+        seen = _things(ctx, look)
         free = [turn + k * math.pi / 4 for k in (0, 1, -1, 2, -2, 3, -3, 4)
-                if not blocks(turned(seen, turn + k * math.pi / 4), look)]
+                if not blocks(_turned(seen, turn + k * math.pi / 4), look)]
         if not free:
             return "blocked"
         turn = free[0]
     body.turn(turn)
     walked = 0.0
     while walked < distance:
-        if look > 0.0 and blocks(sensed(ctx, look), look):
+        if look > 0.0 and blocks(_things(ctx, look), look):
             return "blocked"
         body.walk(min(step, distance - walked))
         walked += step
@@ -67,6 +67,24 @@ def walk_randomly(ctx: Context, *, distance: float = 1.0, step: float = 0.25, lo
             body.walk(-step)
             return "bumped"
     return "done"
+
+
+LANE = 0.4  # metres either side of a walk's line within which a thing sensed is in its way
+
+
+def blocks(seen: list[tuple[float, float]], look: float) -> bool:
+    """Whether a thing `seen` ((forward, left) m, body frame) lies in the way ahead within `look` m."""
+    return any(0.0 < f < look and abs(left) < LANE for f, left in seen)
+
+
+def _turned(seen: list[tuple[float, float]], turn: float) -> list[tuple[float, float]]:
+    """`seen` in the body frame the robot will have after turning by `turn` rad (left +)."""
+    c, s = math.cos(turn), math.sin(turn)
+    return [(c * f + s * left, -s * f + c * left) for f, left in seen]
+
+
+def _things(ctx: Context, look: float) -> list[tuple[float, float]]:
+    return things(ctx.robot.scan(BEAMS, look + 0.5), look + 0.4)
 
 
 @primitive(outcomes=["centred", "lost"], failures=["lost"], outputs=["distance"], world="sim")

@@ -7,7 +7,6 @@ import math
 import numpy as np
 
 from hfsm.primitive import Context, Outcome, primitive
-from hfsm_behaviours.approach.ahead import WARY, in_way
 from hfsm_behaviours.approach.frames import Side, from_table_frame, sides, table_frame
 from hfsm_behaviours.approach.navigate import Look, Tolerance, align_to_side, look_at_table, walk_to
 from hfsm_behaviours.approach.sight import named
@@ -39,9 +38,8 @@ def position_to_centre_of_table_side(
         tries: int = 4, table: list[float] | None = None, gate: float = 0.6) -> Outcome:
     """From near a corner, look left, ahead and right to find the longer side, join the line
     `gap` metres out from it, turn the shoulders parallel to it and crab to its middle. With a
-    `table` ([x, y], own start frame): the table seen nearest it, within `gate` m; then its moves
-    stand still while a robot its range finder sees is in their way (approach.ahead)."""
-    body = Body(ctx, in_way(ctx, WARY) if named(table) is not None else None)
+    `table` ([x, y], own start frame): the table seen nearest it, within `gate` m."""
+    body = Body(ctx)
     look = Look(pitch=pitch, spread=spread, target=named(table), gate=gate)
     rect = look_at_table(body, None, look)
     if not rect.found:

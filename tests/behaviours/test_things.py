@@ -81,7 +81,7 @@ def test_a_range_finder_scans_every_quarter_second_and_keeps_what_it_saw_where_i
 
 
 def test_a_random_walk_turns_from_what_is_in_its_way() -> None:
-    from hfsm_behaviours.approach.ahead import blocks, turned
+    from hfsm_behaviours.approach.search import _turned, blocks
 
     ahead = [(0.5, 0.1)]  # a robot's side 0.5 m ahead
     assert blocks(ahead, 0.8)
@@ -89,5 +89,5 @@ def test_a_random_walk_turns_from_what_is_in_its_way() -> None:
     assert not blocks([(0.5, 0.6)], 0.8)  # beside the way
     assert not blocks([(-0.5, 0.0)], 0.8)  # behind
     # turned a quarter left, the robot ahead is on its right, out of the way
-    assert turned(ahead, math.pi / 2)[0] == pytest.approx((0.1, -0.5))
-    assert not blocks(turned(ahead, math.pi / 2), 0.8)
+    assert _turned(ahead, math.pi / 2)[0] == pytest.approx((0.1, -0.5))
+    assert not blocks(_turned(ahead, math.pi / 2), 0.8)
