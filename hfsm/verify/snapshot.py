@@ -20,16 +20,21 @@ from __future__ import annotations
 import copyreg
 import hashlib
 import io
+import itertools
 import pickle
 import struct
 import sys
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from typing import Any
 
 _ATOMS = (str, int, float, bool, bytes, type(None))
 _CONTAINERS = (dict, list, tuple, set, frozenset)
 _PROTOCOL = 3  # memo writes name their index (BINPUT), see the module's docstring
-_FRAME = b"\x80\x04\x95"  # PROTO 4, FRAME: what follows is one frame of the length written next
+_FRAME = b"\x80\x04\x95"
+_TABLES: dict[int, list[Any]] = {}  # a Snapshots' shared objects left out of its table, by its number
+_NUMBERS = itertools.count()
+STATE_MODULES = ("hfsm.runtime", "hfsm.builtins", "hfsm.verify", "hfsm.primitive", "hfsm.world")
+_RUNTIME = "hfsm.runtime"  # PROTO 4, FRAME: what follows is one frame of the length written next
 
 
 def shared_objects(roots: Iterable[Any]) -> dict[int, Any]:
@@ -62,10 +67,12 @@ def shared_numbers(shared: dict[int, Any]) -> dict[int, int]:
     return {id(o): i for i, o in enumerate(objects)}
 
 
-def state_parts(state: Any, shared: dict[int, Any]) -> tuple[list[type], list[str]]:
-    """The classes and strings of a state's own objects (not of those in `shared`), in the order met."""
+def state_parts(state: Any, shared: dict[int, Any]) -> tuple[list[type], list[str], list[Any]]:
+    """The classes and strings of a state's own objects, and the objects of `shared` it holds, in
+    the order met."""
     classes: dict[type, None] = {}
     strings: dict[int, str] = {}
+    held: dict[int, Any] = {}
     seen: set[int] = set()
     stack = [state]
     while stack:
@@ -73,7 +80,10 @@ def state_parts(state: Any, shared: dict[int, Any]) -> tuple[list[type], list[st
         if obj.__class__ is str:
             strings.setdefault(id(obj), obj)
             continue
-        if isinstance(obj, _ATOMS) or id(obj) in seen or id(obj) in shared or isinstance(obj, type):
+        if id(obj) in shared:
+            held.setdefault(id(obj), obj)
+            continue
+        if isinstance(obj, _ATOMS) or id(obj) in seen or isinstance(obj, type):
             continue
         seen.add(id(obj))
         if isinstance(obj, dict):
@@ -92,39 +102,59 @@ def state_parts(state: Any, shared: dict[int, Any]) -> tuple[list[type], list[st
         for name in [*names, *attrs]:
             strings.setdefault(id(name), name)
         stack.extend(reversed([*(getattr(obj, n) for n in names), *attrs.values()]))
-    return list(classes), list(strings.values())
+    return list(classes), list(strings.values()), list(held.values())
 
 
 def own_classes() -> list[type]:
-    """The classes of hfsm's modules loaded, by module and name."""
+    """The classes of the modules whose objects a state may hold (`STATE_MODULES`), by module, name."""
     found: dict[type, None] = {}
     for name, module in sorted(sys.modules.items()):
-        if name.startswith("hfsm.") and module is not None:
+        if name.startswith(STATE_MODULES) and module is not None:
             for value in vars(module).values():
                 if isinstance(value, type) and value.__module__ == name and "<" not in value.__qualname__:
                     found.setdefault(value)
     return list(found)
 
 
+def _shared(table: int, key: int) -> Any:
+    """What a state's pickle holds in the place of a shared object left out of the table (module
+    level: pickle finds it)."""
+    return _TABLES[table][key]
+
+
 class Snapshots:
     """Dumps and loads engines, sharing the objects given (but containers and functions: those a
     state holds are copied, and a state holds no function) and what the first state dumped holds
-    that never changes (its classes, its strings)."""
+    that never changes (its classes, its strings).
+
+    Shared objects of the engine's own classes and those the first state holds are in the table;
+    the others (the program's specs, which a state seldom holds) are written by a reducer, a call
+    back into Python each, so that copying the table for each copy stays cheap."""
 
     def __init__(self, shared: dict[int, Any]) -> None:
         self.shared = shared
         self.objects = [o for o in shared.values() if not isinstance(o, _CONTAINERS) and not callable(o)]
+        self.number = next(_NUMBERS)
         self.seed: list[Any] = []
+        self.table: dict[Any, Any] = {}
         self._pickler_memo: Any = None
         self._unpickler_memo: Any = None
 
     def _seed(self, engine: Any) -> None:
         made_by, (state,) = engine.__reduce__()  # an engine: the function that makes it again, its state
-        classes, strings = state_parts(state, self.shared)
+        classes, strings, held = state_parts(state, self.shared)
         later = own_classes()  # those of objects that later states make (events, results, built-ins)
         names = [n for cls in later for n in copyreg._slotnames(cls)]  # type: ignore[attr-defined]
-        seed = {id(o): o for o in [*self.objects, made_by, *classes, *later, *strings, *names]}
+        kinds = {type(o) for o in held}
+        objects = [o for o in self.objects if type(o) in kinds or type(o).__module__.startswith(_RUNTIME)]
+        seed = {id(o): o for o in [*objects, made_by, *classes, *later, *strings, *names]}
         self.seed = list(seed.values())
+        rest = [o for o in self.objects if id(o) not in seed]
+        _TABLES[self.number] = rest
+        keys = {id(obj): i for i, obj in enumerate(rest)}
+        self.table = copyreg.dispatch_table.copy()
+        for cls in {type(o) for o in rest}:
+            self.table[cls] = self._reducer(keys)
         pickler = pickle.Pickler(io.BytesIO(), protocol=_PROTOCOL)
         pickler.memo = {id(o): (i, o) for i, o in enumerate(self.seed)}
         self._pickler_memo = pickler.memo
@@ -135,6 +165,17 @@ class Snapshots:
         unpickler.load()
         self._unpickler_memo = unpickler.memo
 
+    def _reducer(self, keys: dict[int, int]) -> Callable[[Any], Any]:
+        number = self.number
+
+        def reduce(obj: Any) -> Any:
+            key = keys.get(id(obj))
+            if key is None:
+                return obj.__reduce_ex__(_PROTOCOL)
+            return _shared, (number, key)
+
+        return reduce
+
     def dump(self, engine: Any) -> bytes:
         if self._pickler_memo is None:
             self._seed(engine)
@@ -142,6 +183,7 @@ class Snapshots:
         out.write(_FRAME + bytes(8))
         pickler = pickle.Pickler(out, protocol=_PROTOCOL)
         pickler.memo = self._pickler_memo
+        pickler.dispatch_table = self.table
         pickler.dump(engine)
         data = out.getbuffer()
         data[3:11] = (len(data) - 11).to_bytes(8, "little")  # one frame: the protocol 3 pickle
@@ -155,6 +197,7 @@ class Snapshots:
 
     def close(self) -> None:
         self._pickler_memo = self._unpickler_memo = None
+        _TABLES.pop(self.number, None)
 
 
 def digest(data: bytes) -> bytes:
