@@ -55,9 +55,12 @@ def _states(args: list[str]) -> tuple[list[Any], dict[int, Any]]:
     close = snapshot.Snapshots.close
     snapshot.Snapshots.close = lambda self: None  # type: ignore[method-assign]
     try:
-        with tempfile.TemporaryDirectory() as folder, contextlib.redirect_stdout(io.StringIO()):
-            with contextlib.redirect_stderr(io.StringIO()):
-                verify_cli.main([*args, "--json", "--out", str(Path(folder) / "ce.jsonl")])
+        with (
+            tempfile.TemporaryDirectory() as folder,
+            contextlib.redirect_stdout(io.StringIO()),
+            contextlib.redirect_stderr(io.StringIO()),
+        ):
+            verify_cli.main([*args, "--json", "--out", str(Path(folder) / "ce.jsonl")])
     finally:
         search._Search.visit = visit  # type: ignore[method-assign]
         snapshot.Snapshots.close = close  # type: ignore[method-assign]

@@ -1,18 +1,20 @@
-"""States of a run as bytes: a pickle of the engine in which whatever all states share is written as
-a reference to a table both ends hold, never as itself. The bytes copy a state and hash it.
+"""States of a run as bytes: a pickle of the engine in which what all states share is written as a
+reference, never as itself. The bytes copy a state and hash it.
 
-The table (`seed`) is the objects every state shares (the compiled program, stand-ins, the decider,
-the random generator, which stand-ins never draw from), and from the first state dumped: its
-classes and the functions that make them again, and its strings (attribute names, agents' and
-states' names). It is put in the pickler's memo and in the unpickler's before each copy, so the C
-pickler writes each as a memo reference, with no call back into Python, and a load makes none of
-them again. A load therefore gives the very strings and classes the table holds.
+What all states share: the objects reachable from the compiled program, the stand-ins, the decider
+and the random generator (which stand-ins never draw from); and what the first state dumped holds
+that never changes, its classes (with those of the engine's modules) and their attribute names.
+Most of it is a table (`seed`) put in the pickler's memo and in the unpickler's before each copy:
+the C pickler writes each as a memo reference with no call back into Python, and a load makes none
+of them again but gives the table's very objects. Shared objects of classes a state seldom holds
+(the program's specs) stay out of the table, which is copied for each copy, and are written by a
+reducer instead.
 
 Two quirks of CPython's pickle decide the format. An unpickler's memo set from a dict is dropped
 (3.11), so the table is put in one by loading a pickle that stores each object through
 `persistent_load`, and copied from it; and a copied unpickler memo does not know its length, so a
-state is written with protocol 3, whose memo writes name their index, framed as protocol 4 frames
-(one read of the whole state instead of one per opcode).
+state is written with protocol 3, whose memo writes name their index, in one protocol 4 frame (one
+read of the whole state instead of one per opcode).
 """
 
 from __future__ import annotations
@@ -68,8 +70,10 @@ def shared_numbers(shared: dict[int, Any]) -> dict[int, int]:
 
 
 def state_parts(state: Any, shared: dict[int, Any]) -> tuple[list[type], list[str], list[Any]]:
-    """The classes and strings of a state's own objects, and the objects of `shared` it holds, in
-    the order met."""
+    """The classes of a state's own objects and their attribute names, and the objects of `shared`
+    it holds, in the order met. (Strings held as values are not among them: an equal string made
+    later would be written by value where the one met here is a reference, and two equal states
+    would have different bytes.)"""
     classes: dict[type, None] = {}
     strings: dict[int, str] = {}
     held: dict[int, Any] = {}
@@ -77,9 +81,6 @@ def state_parts(state: Any, shared: dict[int, Any]) -> tuple[list[type], list[st
     stack = [state]
     while stack:
         obj = stack.pop()
-        if obj.__class__ is str:
-            strings.setdefault(id(obj), obj)
-            continue
         if id(obj) in shared:
             held.setdefault(id(obj), obj)
             continue
@@ -125,7 +126,7 @@ def _shared(table: int, key: int) -> Any:
 class Snapshots:
     """Dumps and loads engines, sharing the objects given (but containers and functions: those a
     state holds are copied, and a state holds no function) and what the first state dumped holds
-    that never changes (its classes, its strings).
+    that never changes (its classes, its attribute names).
 
     Shared objects of the engine's own classes and those the first state holds are in the table;
     the others (the program's specs, which a state seldom holds) are written by a reducer, a call

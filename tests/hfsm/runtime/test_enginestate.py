@@ -126,13 +126,15 @@ def test_an_engine_writing_a_trace_has_no_snapshot() -> None:
 
 
 def test_a_copy_writes_what_never_changes_as_references(reached: list[tuple[bytes, Any]]) -> None:
-    """Classes, the function that makes an engine again, attribute names and the agents' names are
-    in the table both ends of a copy hold (hfsm/verify/snapshot.py): never in a state's bytes, and
-    a load gives the table's very objects."""
+    """Classes, the function that makes an engine again and attribute names are in the table both
+    ends of a copy hold (hfsm/verify/snapshot.py): never in a state's bytes, and a load gives the
+    table's very objects."""
     for data, found in reached:
         assert b"hfsm.runtime" not in data and b"restore_engine" not in data
         assert b"state_deadline" not in data and b"vars_shown" not in data
         engine = found.snaps.load(data)
         seed = {id(o) for o in found.snaps.seed}
-        assert all(id(a.name) in seed for a in engine.agents)
+        assert all(id(name) in seed for a in engine.agents for name in vars(a))
+        state = engine.snapshot()
+        assert all(id(o.__class__) in seed for o in (*state.agents, state.world, state.clock, state.team))
         assert all(id(type(a.root)) in seed for a in engine.agents if a.root is not None)
