@@ -189,7 +189,7 @@ def _list(args: argparse.Namespace) -> int:
 
     with stdout_to_stderr():
         registry = Registry.discover()
-    if args.world is not None and not args.replay:  # a replay stands in every primitive, as hfsm-verify
+    if args.world is not None:
         registry = registry.for_world(args.world)
     beside = [args.file.parent] if args.file is not None and args.file.is_file() else []
     sys.stdout.write(render(registry, [*beside, *args.lib, *registry.machine_folders], args.list))
