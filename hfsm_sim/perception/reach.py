@@ -47,13 +47,34 @@ def side_extent(image: np.ndarray, camera: CameraModel, side: str, turn: float =
         return NO_EXTENT
     sign = 1.0 if side == "left" else -1.0
     along = sign * (-math.sin(turn) * xs + math.cos(turn) * ys)
-    cuts = [cut for cut in (_before_gap(along[ok], cfg.extent_gap),
-                            _before_gap(along[ok & top_face(image, cfg=cfg)[vs, us]], cfg.extent_gap))
+    top = ok & top_face(image, cfg=cfg)[vs, us]
+    ok, top = _this_table(math.cos(turn) * xs + math.sin(turn) * ys, ok, top, cfg.extent_gap)
+    if not ok.any():
+        return NO_EXTENT
+    cuts = [cut for cut in (_before_gap(along[ok], cfg.extent_gap), _before_gap(along[top], cfg.extent_gap))
             if cut is not None]
     if cuts:
         return SideExtent(True, lateral=max(0.0, min(cuts)), clipped=False)
     outer = mask[:, 0] if side == "left" else mask[:, -1]
-    return SideExtent(True, lateral=max(0.0, float(np.max(along[ok]))), clipped=bool(outer.any()))
+    far = along[top] if top.any() else along[ok]
+    return SideExtent(True, lateral=max(0.0, float(np.max(far))), clipped=bool(outer.any()))
+
+
+def _this_table(across: np.ndarray, ok: np.ndarray, top: np.ndarray,
+                gap: float) -> tuple[np.ndarray, np.ndarray]:
+    """The pixels of the table whose near edge is nearest, by their distance `across` the edge
+    (away from the body): its top face runs from the near edge to the far edge with no gap, and a
+    top beyond a gap wider than `gap` is another table's (one standing behind this one, whose end
+    reaches past this table's end, would otherwise lengthen the side; generated room close-34000).
+    Pixels below the top (rims, legs) project nearer than the top, so only the far cut is taken."""
+    if not top.any():
+        return ok, top
+    ordered = np.sort(across[top])
+    gaps = np.nonzero(np.diff(ordered) > gap)[0]
+    if not gaps.size:
+        return ok, top
+    keep = across <= ordered[gaps[0]] + gap / 2
+    return ok & keep, top & keep
 
 
 def _before_gap(along: np.ndarray, gap: float) -> float | None:

@@ -102,3 +102,24 @@ def test_a_second_table_in_line_does_not_lengthen_the_side(other_x: float) -> No
     assert reach["left"].lateral == pytest.approx(0.4, abs=0.02)
     assert reach["right"].lateral == pytest.approx(0.4, abs=0.02)
     assert not reach["right"].clipped
+
+
+@pytest.mark.parametrize(("other_y", "other_x"), [(1.5, 0.6), (1.4, 0.9), (1.2, 0.6), (1.6, 0.3)])
+def test_a_table_behind_reaching_past_the_end_does_not_lengthen_the_side(other_y: float, other_x: float) -> None:
+    """Another table standing behind the held one, parallel, its end reaching past the held table's
+    end on the right (generated room close-34000: table1 at its wall 1.4 m behind table2, whose
+    leader then measured 0.33 m left and 1.07 m right and crabbed to and fro until the limit): the
+    reach is still the held table's."""
+    scenario = at_table((0.0, 0.0, 0.0), (0.0, 0.0, 0.0), table_x=0.0)
+    del scenario["table"]
+    scenario["tables"] = [{"x": 0.0}, {"x": other_x, "y": other_y, "length": 1.04, "width": 0.42}]
+    with World(scenario_from_dict(scenario), 0) as world:
+        robot = world.robots["r1"]
+        look(world, 0.0, 0.5)
+        turn = near_edge(robot.image("down"), robot.camera_model("down")).turn
+        reach = {}
+        for side, yaw in (("left", 1.3), ("right", -1.3)):
+            look(world, yaw, 0.45)
+            reach[side] = side_extent(robot.image("forward"), robot.camera_model("forward"), side, turn)
+    assert reach["left"].lateral == pytest.approx(0.4, abs=0.02)
+    assert reach["right"].lateral == pytest.approx(0.4, abs=0.02)
