@@ -5,6 +5,7 @@ from __future__ import annotations
 import itertools
 import math
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -165,3 +166,19 @@ def test_a_place_beyond_a_wall_is_not_taken_both_robots_head_for_the_other_side(
         assert place_for(table, at, me, [mate], partner=mate, leads=leads, room=room) == near
     middle = place_for(table, (0.0, 0.0), (0.0, -3.0), [])  # both places free: the rule as before
     assert place_for(table, (0.0, 0.0), (0.0, -3.0), [], room=room) == middle
+
+
+def test_a_place_on_another_table_is_not_taken() -> None:
+    other = footprint({"id": "t2", "x": 0.0, "y": 1.6, "length": 0.8, "width": 0.5}, 0.0)
+    assert place_for(TABLE, (0.0, 0.0), (0.0, 3.0), [], tops=[other]) == (0.0, -1.2)
+    assert place_for(TABLE, (0.0, 0.0), (0.0, 3.0), []) == (0.0, 1.2)
+
+
+def test_with_one_side_on_another_table_the_assistant_heads_for_an_end_of_the_free_side() -> None:
+    """Generated room close-34000: both robots of table1's pair headed for its one free place; the
+    assistant, finding its leader there, walked about it until its walk timed out (305 s)."""
+    other = footprint({"id": "t2", "x": 0.0, "y": 1.6, "length": 0.8, "width": 0.5}, 0.0)
+    leader, assistant = (0.0, -3.0), (2.0, -3.0)
+    assert place_for(TABLE, (0.0, 0.0), leader, [assistant], partner=assistant, leads=True, tops=[other]) == (0.0, -1.2)
+    end = place_for(TABLE, (0.0, 0.0), assistant, [leader], partner=leader, leads=False, tops=[other])
+    assert end == pytest.approx((1.0, -0.6))
