@@ -62,18 +62,18 @@ def side_extent(image: np.ndarray, camera: CameraModel, side: str, turn: float =
 
 def _this_table(across: np.ndarray, ok: np.ndarray, top: np.ndarray,
                 gap: float) -> tuple[np.ndarray, np.ndarray]:
-    """The pixels of the table whose near edge is nearest, by their distance `across` the edge
-    (away from the body): its top face runs from the near edge to the far edge with no gap, and a
-    top beyond a gap wider than `gap` is another table's (one standing behind this one, whose end
-    reaches past this table's end, would otherwise lengthen the side; generated room close-34000).
-    Pixels below the top (rims, legs) project nearer than the top, so only the far cut is taken."""
-    if not top.any():
+    """The pixels of the table ahead whose near edge is nearest, by their distance `across` the edge
+    (ahead of the body > 0): its top face runs from the near edge to the far edge with no gap wider
+    than `gap`, a top beyond such a gap is another table's (one standing behind this one, its end
+    reaching past this table's end, lengthened the side: generated room close-34000), and so is a
+    top more than `gap` behind the body (the held table's top is ahead of it). Rims and legs project
+    nearer than their top, so the far cut is taken from the tops alone."""
+    ahead = np.sort(across[top & (across >= 0.0)])
+    if not ahead.size:
         return ok, top
-    ordered = np.sort(across[top])
-    gaps = np.nonzero(np.diff(ordered) > gap)[0]
-    if not gaps.size:
-        return ok, top
-    keep = across <= ordered[gaps[0]] + gap / 2
+    gaps = np.nonzero(np.diff(ahead) > gap)[0]
+    far = ahead[gaps[0]] if gaps.size else ahead[-1]
+    keep = (across >= -gap) & (across <= far + gap / 2)
     return ok & keep, top & keep
 
 

@@ -6,11 +6,13 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 
+import numpy as np
 import pytest
 from carry_scene import GRIP_Y, TABLE_X, at_table
 
 from hfsm_sim import World, scenario_from_dict
 from hfsm_sim.perception import near_edge, side_extent, wall_to_side
+from hfsm_sim.perception.reach import _this_table
 
 # (along m, away m, turned deg) from square at grip depth
 POSES = [(0.0, 0.0, 0.0), (0.1, 0.02, 7.0), (-0.1, -0.01, -7.0), (0.05, 0.03, 15.0)]
@@ -123,3 +125,14 @@ def test_a_table_behind_reaching_past_the_end_does_not_lengthen_the_side(other_y
             reach[side] = side_extent(robot.image("forward"), robot.camera_model("forward"), side, turn)
     assert reach["left"].lateral == pytest.approx(0.4, abs=0.02)
     assert reach["right"].lateral == pytest.approx(0.4, abs=0.02)
+
+
+def test_a_table_behind_the_robot_is_not_the_held_one() -> None:
+    """Top pixels of a table behind the robot (across < 0; the side-by-side room: table1 at its wall
+    behind and to the right of table2's assistant, whose right reach then measured 3.2-3.6 m) and of one
+    beyond a gap ahead are cut; the held table's top, from its near edge on, is kept."""
+    across = np.array([-1.0, -0.8, -0.6, 0.1, 0.3, 0.5, 0.6, 1.5, 1.7])
+    ok = np.ones(across.size, dtype=bool)
+    kept, top = _this_table(across, ok, ok.copy(), 0.3)
+    assert list(top) == [False, False, False, True, True, True, True, False, False]
+    assert list(kept) == list(top)
