@@ -130,7 +130,7 @@ def _main(args: argparse.Namespace, factories: dict[str, WorldFactory]) -> int:
         raise UsageError("give a machine file or name (or --list, --schema, --new-plugin DIR)")
     with stdout_to_stderr():
         registry = Registry.discover()
-    if args.world is not None:
+    if args.world is not None and not args.replay:  # a replay stands in every primitive, as hfsm-verify
         registry = registry.for_world(args.world)
     args.file = machine_path(args.file, args.lib, registry)
     inputs = {"none": NullWorld().inputs(), **{n: f.inputs() for n, f in factories.items()}}

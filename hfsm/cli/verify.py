@@ -47,7 +47,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--delay", type=_count, default=0, metavar="K", help="ticks each may come late")
     p.add_argument("--fail", type=_count, default=0, metavar="N", help="agents that may fail, at any tick")
     p.add_argument(
-        "--bound", type=_seconds, metavar="S", help="run time explored (default: the top timer, else 600)"
+        "--bound",
+        type=_seconds,
+        metavar="S",
+        help="run time explored (default: the top machine's timer with the params, else 600)",
     )
     p.add_argument("--max-states", type=_count, default=1_000_000, metavar="N", help="stop after N states")
     p.add_argument("--max-seconds", type=_seconds, metavar="S", help="stop after S seconds of search")
@@ -135,7 +138,7 @@ def _main(args: argparse.Namespace) -> int:
     values = read_values(args.values)
     inputs = input_values({n: f.inputs() for n, f in factories.items()}, values.inputs)
     values.inputs = inputs
-    bound = bound_of(top, args.bound)
+    bound = bound_of(top, args.bound, {a: agent_params.get(a, params) for a in agents})
     chooser = Chooser()
     program = verify_program(loaded, registry, args.stand_in, values, chooser, args.dt)
     scopes = _scopes(args.scope, agents)

@@ -22,7 +22,7 @@ def verify_case(plan: CasePlan) -> tuple[list[Mismatch], Outcome]:
     machines = sorted(n for n in plan.stand_ins if n in plan.loaded.machines)
     values = Values(scripts=_scripts(plan))
     program = verify_program(plan.loaded, plan.registry, machines, values, chooser, plan.dt)
-    bound = bound_of(top, asked.bound)
+    bound = bound_of(top, asked.bound, {a: plan.agent_params.get(a, plan.params) for a in plan.agents})
     options = RunOptions(
         plan.top,
         plan.agents,

@@ -9,10 +9,13 @@ from typing import Any
 
 from hfsm.checks.context import machine_spec
 from hfsm.errors import UsageError
+from hfsm.expr import ExprSyntaxError, ExprValueError, Names, Scope, compile_expr
 from hfsm.load import Loaded
+from hfsm.model import Param
 from hfsm.names import did_you_mean
 from hfsm.registry import Registry
 from hfsm.runtime.program import Program
+from hfsm.spec import is_finite_number
 from hfsm.verify.choices import Decider
 from hfsm.verify.standins import stand_in
 from hfsm.verify.values import Values
@@ -92,11 +95,30 @@ def unobserved(loaded: Loaded, watches_time_in_states: bool) -> frozenset[str]:
     return frozenset(found)
 
 
-def bound_of(top: Any, given: float | None) -> float:
-    """`--bound`, else the top machine's timer when it is a number, else 600 s."""
+def bound_of(top: Any, given: float | None, params: Mapping[str, Mapping[str, Any]] = {}) -> float:
+    """`--bound`, else the top machine's timer: a number, or an expression worked out with each
+    agent's id and params (`params`: agent -> its params; the longest); else 600 s."""
     if given is not None:
         return given
     timer = top.model.timer
     if isinstance(timer, int | float) and not isinstance(timer, bool):
         return float(timer)
+    if isinstance(timer, str):
+        spans = [_span(timer, top.model.params, agent, p) for agent, p in params.items()]
+        found = [s for s in spans if s is not None]
+        if found:
+            return max(found)
     return DEFAULT_BOUND
+
+
+def _span(timer: str, declared: Mapping[str, Param], agent: str, given: Mapping[str, Any]) -> float | None:
+    """A timer's expression worked out from params alone (the given ones over the defaults); None
+    when it reads anything else or does not give a positive number of seconds (the run reports
+    that itself)."""
+    params = {n: p.default for n, p in declared.items() if not p.required} | dict(given)
+    try:
+        fn = compile_expr(timer.strip()[2:-1], Names(declared, None, state=False, machine_time=False))
+        seconds = fn(Scope(params, {}, agent))
+    except (ExprSyntaxError, ExprValueError):
+        return None
+    return float(seconds) if is_finite_number(seconds) and seconds > 0 else None

@@ -23,7 +23,7 @@ from hfsm.verify.canon import Keys
 from hfsm.verify.choices import Choice, Chooser
 from hfsm.verify.radio import ChoosingWorld, Given
 from hfsm.verify.snapshot import Snapshots, digest, shared_numbers, shared_objects
-from hfsm.verify.step import Ended, first_state, next_state
+from hfsm.verify.step import Ended, discard, first_state, next_state
 
 # A property looked at after each tick: a violation as (kind, agent, text), or None.
 Check = Callable[[Engine, "Ended | None"], "tuple[str, str, str] | None"]
@@ -151,7 +151,8 @@ class _Search:
         return time.perf_counter() - self.started > self.budget.max_seconds
 
     def visit(self, engine: Engine, ended: Ended | None, parent: int) -> bool:
-        """Record a state reached; False when it violates a property (result.violation set)."""
+        """Record a state reached; False when it violates a property (result.violation set). An
+        engine not queued is discarded (`step.discard`)."""
         made = list(self.chooser.made)
         result = self.result
         for agent in engine.agents:
@@ -164,6 +165,7 @@ class _Search:
             return False
         if ended is not None or engine.running == 0:
             self.ends += 1
+            discard(engine)
             return True
         if self.key is None:
             data = self.snaps.dump(engine)
@@ -172,6 +174,7 @@ class _Search:
             key = self.key(engine)
         explored = self.seen.get(key)
         if explored is not None and explored >= engine.tick:
+            discard(engine)
             return True  # the same situation, as late or later: its runs cover this one's (docs/VERIFY.md)
         self.seen[key] = engine.tick
         self.explored += 1
@@ -183,6 +186,7 @@ class _Search:
             self.queue.append((len(self.nodes) - 1, data, engine))
         else:
             self.queue.append((len(self.nodes) - 1, data, None))
+            discard(engine)
         return True
 
     def done(self, exhausted: bool) -> Outcome:

@@ -1,5 +1,5 @@
 """hfsm-verify's command line: machines stood in for, bad input (exit 2, positioned), and the
-counterexample as hfsm-monitor reads it."""
+counterexample as hfsm-monitor reads it and hfsm-run replays it."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import json
 from pathlib import Path
 
 import pytest
-from verify_run import DATA, EXAMPLES, verify
+from verify_run import DATA, EXAMPLES, MACHINES, replay, verify
 
 from hfsm.cli import monitor
 from hfsm.cli import verify as verify_cli
@@ -28,6 +28,21 @@ def test_a_machine_stood_in_for_may_end_with_any_outcome(
     schedule = json.loads((tmp_path / "ce.jsonl").read_text().splitlines()[0])["verify"]
     assert schedule["stand_ins"] == ["reach_once"]
     assert any(c["what"].startswith("reach_once of robot") for c in schedule["choices"])
+
+
+def test_a_counterexample_of_a_machine_using_a_worlds_primitives_replays_in_world_none(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    """`lift_table` is a primitive of the simulated world only: hfsm-verify stands it in, and so
+    does the replay in world `none` (it once stopped at E300, the primitive not of that world)."""
+    file = MACHINES / "synchronised_lift_table.yaml"
+    roles = ("--agent-param", "r1:role=leader", "--agent-param", "r2:role=assistant")
+    args = ("--agents", "r1,r2", *roles, "--param", "patience=5", "--goal", "success")
+    code, verdict = verify(capsys, file, *args, out=tmp_path / "ce.jsonl")
+    assert (code, verdict["kind"]) == (1, "failure_outcome")
+    assert "lift_table of r1" in verdict["stderr"]
+    assert replay(file, tmp_path / "ce.jsonl", tmp_path / "again.jsonl") == 0
+    assert (tmp_path / "again.jsonl").read_bytes() == (tmp_path / "ce.jsonl").read_bytes()
 
 
 def test_bad_input_is_exit_2_with_every_problem_at_its_place(

@@ -79,7 +79,7 @@ def test_a_copy_is_one_engine_wired_to_its_own_clock_and_team(reached: list[tupl
     waiting = 0
     for data, found in reached:
         engine = found.snaps.load(data)
-        objects = _everything(engine, {id(o): o for o in snapshot._TABLES[found.snaps.number]})
+        objects = _everything(engine, {id(o): o for o in found.snaps.objects})
         assert [o for o in objects if isinstance(o, RunClock)] == [engine.clock]
         assert [o for o in objects if isinstance(o, Team)] == [engine.team]
         assert all(a.clock is engine.clock for a in engine.agents)
@@ -123,3 +123,18 @@ def test_an_engine_writing_a_trace_has_no_snapshot() -> None:
     engine = Engine([], NullWorld(), 0.05, ListTrace())
     with pytest.raises(ValueError, match="trace"):
         engine.snapshot()
+
+
+def test_a_copy_writes_what_never_changes_as_references(reached: list[tuple[bytes, Any]]) -> None:
+    """Classes, the function that makes an engine again and attribute names are in the table both
+    ends of a copy hold (hfsm/verify/snapshot.py): never in a state's bytes, and a load gives the
+    table's very objects."""
+    for data, found in reached:
+        assert b"hfsm.runtime" not in data and b"restore_engine" not in data
+        assert b"state_deadline" not in data and b"vars_shown" not in data
+        engine = found.snaps.load(data)
+        seed = {id(o) for o in found.snaps.seed}
+        assert all(id(name) in seed for a in engine.agents for name in vars(a))
+        state = engine.snapshot()
+        assert all(id(o.__class__) in seed for o in (*state.agents, state.world, state.clock, state.team))
+        assert all(id(type(a.root)) in seed for a in engine.agents if a.root is not None)
