@@ -96,7 +96,7 @@ def places(table: Mapping[str, Any], at: Point, gap: float = GAP) -> list[Point]
 
 def place_for(table: Mapping[str, Any], at: Point, me: Point, others: Sequence[Point],
               gap: float = GAP, partner: Point | None = None, leads: bool = True,
-              room: tuple[float, float] | None = None) -> Point:
+              room: tuple[float, float] | None = None, tops: Sequence[Rect] = ()) -> Point:
     """Of the two places beside the table, the one with fewer robots within `KEEP` m of it (a failed
     robot stands at the other), then the nearer one to `me`. With a `partner` (where it said it
     stands), the pair takes one place each, the way that puts both nearer their places (a partner
@@ -104,12 +104,22 @@ def place_for(table: Mapping[str, Any], at: Point, me: Point, others: Sequence[P
     else the partner) takes the place the rule above gives it and the other robot the other place:
     two robots walking to one table never head for the same side. A place no robot can stand at
     (within `WALL` m of a wall of the `room`, {width, depth} centred on the origin, or beyond it) is
-    not taken while the other is: both robots then head for the other side."""
+    not taken while the other is: both robots then head for the other side. Nor is a place within
+    `BODY` m of another table's top (`tops`, where they stand): walking there pushes that table; then
+    the assistant of a pair (`leads` false) heads for the free side's end nearer to it (`beyond`),
+    from where the paper's assistant walks round to its side, rather than for its leader's place."""
     sides = places(table, at, gap)
     if room is not None:
         free = [p for p in sides if standable(p, room)]
         if len(free) == 1:
             return free[0]
+    free = [p for p in sides if not any(t.contains(p, BODY) for t in tops)]
+    if len(free) == 1:
+        if partner is None or leads:
+            return free[0]
+        ends = [p for p in beyond(table, at, free[0]) if (room is None or standable(p, room))
+                and not any(t.contains(p, BODY) for t in tops)]
+        return min(ends, key=lambda p: (math.dist(p, me), p)) if ends else free[0]
 
     def key(p: Point, who: Point) -> tuple[int, float]:
         return (sum(math.dist(p, o) < KEEP for o in others if o != partner), math.dist(p, who))
@@ -123,6 +133,17 @@ def place_for(table: Mapping[str, Any], at: Point, me: Point, others: Sequence[P
     if leads:
         return theirs
     return sides[1] if theirs == sides[0] else sides[0]
+
+
+def beyond(table: Mapping[str, Any], at: Point, place: Point, out: float = 0.6) -> list[Point]:
+    """The two points `out` m past the table's ends along its long axis, `out` m from its centre line
+    on the side of `place`."""
+    yaw = math.radians(float(table.get("yaw", 0.0)))
+    ux, uy = math.cos(yaw), math.sin(yaw)
+    side = 1.0 if -uy * (place[0] - at[0]) + ux * (place[1] - at[1]) >= 0 else -1.0
+    along = float(table.get("length", 0.8)) / 2 + out
+    return [(at[0] + end * along * ux - side * out * uy, at[1] + end * along * uy + side * out * ux)
+            for end in (1.0, -1.0)]
 
 
 def standable(p: Point, room: tuple[float, float], wall: float = WALL) -> bool:

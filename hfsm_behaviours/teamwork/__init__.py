@@ -28,7 +28,7 @@ from hfsm_behaviours.teamwork.room import (
     room_relocalise,
     room_settle,
 )
-from hfsm_behaviours.teamwork.walk import room_give_way, room_route
+from hfsm_behaviours.teamwork.walk import room_aside, room_give_way, room_route
 
 PRIMITIVES: tuple[Primitive, ...] = (
     tararc_recall,
@@ -54,5 +54,6 @@ PRIMITIVES: tuple[Primitive, ...] = (
     room_hear,
     room_settle,
     room_route,
+    room_aside,
     room_give_way,
 )

@@ -9,6 +9,7 @@ from dataclasses import replace
 from typing import Any
 
 from hfsm.primitive import Context, Outcome, primitive
+from hfsm_behaviours.room.aside import aside
 from hfsm_behaviours.room.claims import footprint
 from hfsm_behaviours.room.frames import to_local, to_room
 from hfsm_behaviours.room.walks import (
@@ -68,12 +69,13 @@ def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
     others = [p for r, p in sorted(said.items()) if r != ctx.agent]
     mate = said.get(str(job.get("partner", "")))
     size = (float(room["width"]), float(room["depth"])) if room else None
-    goal = place_for(table, at, me, others, partner=mate, leads=job.get("role") != "assistant", room=size)
-    if math.dist(me, goal) <= near:
-        return Outcome("here", path=[], walk=[], face=to_local(start, at), length=0.0, standing={})
     # the table walked to is not in the way of its own place
     rest = {k: v for k, v in tables.items() if k != str(job["table"])}
     scene = _scene(rest, done or [], seen or {}, others, room)
+    goal = place_for(table, at, me, others, partner=mate, leads=job.get("role") != "assistant", room=size,
+                     tops=scene.tables)
+    if math.dist(me, goal) <= near:
+        return Outcome("here", path=[], walk=[], face=to_local(start, at), length=0.0, standing={})
     scene = replace(scene, tables=(*scene.tables, footprint(table, 0.0, at)))
     points = plan_walk(scene, me, goal) or plan_walk(replace(scene, keep=TIGHT), me, goal)
     if points is None and wait:
@@ -83,6 +85,28 @@ def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
     return Outcome("walk", path=[to_local(start, p) for p in points], face=to_local(start, at),
                    walk=[[round(p[0], 4), round(p[1], 4)] for p in [me, *points]], length=round(length, 3),
                    standing={r: [p[0], p[1]] for r, p in sorted(said.items()) if r != ctx.agent})
+
+
+@primitive(outcomes=["aside"], outputs=["spot"])
+def room_aside(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose: dict[str, Any],
+               tables: dict[str, Any], room: dict[str, Any], done: list[Any] | None = None,
+               seen: dict[str, Any] | None = None, where: dict[str, Any] | None = None,
+               starts: dict[str, Any] | None = None) -> Outcome:
+    """Where this robot waits (`spot`, [x, y] in its own start frame): a spare or an idle robot
+    standing in a claimed corridor of a table not yet done steps to the nearest point out of every
+    such corridor (hfsm_behaviours.room.aside, round the tables and the robots where the team
+    believes them); a leader or an assistant, or a robot in no corridor, waits where it stands."""
+    here = [float(pose["x"]), float(pose["y"])]
+    if not tables or not room or job.get("role") in ("leader", "assistant"):
+        return Outcome("aside", spot=here)
+    me = to_room(start, here)
+    said = {str(r): (float(p["x"]), float(p["y"])) for r, p in (starts or {}).items()}
+    said.update({str(r): (float(p[0]), float(p[1])) for r, p in (where or {}).items()})
+    others = [p for r, p in sorted(said.items()) if r != ctx.agent]
+    spot = aside(_scene(tables, done or [], seen or {}, others, room), (me[0], me[1]))
+    if spot == (me[0], me[1]):
+        return Outcome("aside", spot=here)
+    return Outcome("aside", spot=[round(v, 6) for v in to_local(start, spot)])
 
 
 @primitive(outcomes=["clear", "timeout"], outputs=["since", "crowd", "waited"])

@@ -47,13 +47,34 @@ def side_extent(image: np.ndarray, camera: CameraModel, side: str, turn: float =
         return NO_EXTENT
     sign = 1.0 if side == "left" else -1.0
     along = sign * (-math.sin(turn) * xs + math.cos(turn) * ys)
-    cuts = [cut for cut in (_before_gap(along[ok], cfg.extent_gap),
-                            _before_gap(along[ok & top_face(image, cfg=cfg)[vs, us]], cfg.extent_gap))
+    top = ok & top_face(image, cfg=cfg)[vs, us]
+    ok, top = _this_table(math.cos(turn) * xs + math.sin(turn) * ys, ok, top, cfg.extent_gap)
+    if not ok.any():
+        return NO_EXTENT
+    cuts = [cut for cut in (_before_gap(along[ok], cfg.extent_gap), _before_gap(along[top], cfg.extent_gap))
             if cut is not None]
     if cuts:
         return SideExtent(True, lateral=max(0.0, min(cuts)), clipped=False)
     outer = mask[:, 0] if side == "left" else mask[:, -1]
-    return SideExtent(True, lateral=max(0.0, float(np.max(along[ok]))), clipped=bool(outer.any()))
+    far = along[top] if top.any() else along[ok]
+    return SideExtent(True, lateral=max(0.0, float(np.max(far))), clipped=bool(outer.any()))
+
+
+def _this_table(across: np.ndarray, ok: np.ndarray, top: np.ndarray,
+                gap: float) -> tuple[np.ndarray, np.ndarray]:
+    """The pixels of the table ahead whose near edge is nearest, by their distance `across` the edge
+    (ahead of the body > 0): its top face runs from the near edge to the far edge with no gap wider
+    than `gap`, a top beyond such a gap is another table's (one standing behind this one, its end
+    reaching past this table's end, lengthened the side: generated room close-34000), and so is a
+    top more than `gap` behind the body (the held table's top is ahead of it). Rims and legs project
+    nearer than their top, so the far cut is taken from the tops alone."""
+    ahead = np.sort(across[top & (across >= 0.0)])
+    if not ahead.size:
+        return ok, top
+    gaps = np.nonzero(np.diff(ahead) > gap)[0]
+    far = ahead[gaps[0]] if gaps.size else ahead[-1]
+    keep = (across >= -gap) & (across <= far + gap / 2)
+    return ok & keep, top & keep
 
 
 def _before_gap(along: np.ndarray, gap: float) -> float | None:

@@ -6,11 +6,13 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 
+import numpy as np
 import pytest
 from carry_scene import GRIP_Y, TABLE_X, at_table
 
 from hfsm_sim import World, scenario_from_dict
 from hfsm_sim.perception import near_edge, side_extent, wall_to_side
+from hfsm_sim.perception.reach import _this_table
 
 # (along m, away m, turned deg) from square at grip depth
 POSES = [(0.0, 0.0, 0.0), (0.1, 0.02, 7.0), (-0.1, -0.01, -7.0), (0.05, 0.03, 15.0)]
@@ -102,3 +104,35 @@ def test_a_second_table_in_line_does_not_lengthen_the_side(other_x: float) -> No
     assert reach["left"].lateral == pytest.approx(0.4, abs=0.02)
     assert reach["right"].lateral == pytest.approx(0.4, abs=0.02)
     assert not reach["right"].clipped
+
+
+@pytest.mark.parametrize(("other_y", "other_x"), [(1.5, 0.6), (1.4, 0.9), (1.2, 0.6), (1.6, 0.3)])
+def test_a_table_behind_reaching_past_the_end_does_not_lengthen_the_side(other_y: float, other_x: float) -> None:
+    """Another table standing behind the held one, parallel, its end reaching past the held table's
+    end on the right (generated room close-34000: table1 at its wall 1.4 m behind table2, whose
+    leader then measured 0.33 m left and 1.07 m right and crabbed to and fro until the limit): the
+    reach is still the held table's."""
+    scenario = at_table((0.0, 0.0, 0.0), (0.0, 0.0, 0.0), table_x=0.0)
+    del scenario["table"]
+    scenario["tables"] = [{"x": 0.0}, {"x": other_x, "y": other_y, "length": 1.04, "width": 0.42}]
+    with World(scenario_from_dict(scenario), 0) as world:
+        robot = world.robots["r1"]
+        look(world, 0.0, 0.5)
+        turn = near_edge(robot.image("down"), robot.camera_model("down")).turn
+        reach = {}
+        for side, yaw in (("left", 1.3), ("right", -1.3)):
+            look(world, yaw, 0.45)
+            reach[side] = side_extent(robot.image("forward"), robot.camera_model("forward"), side, turn)
+    assert reach["left"].lateral == pytest.approx(0.4, abs=0.02)
+    assert reach["right"].lateral == pytest.approx(0.4, abs=0.02)
+
+
+def test_a_table_behind_the_robot_is_not_the_held_one() -> None:
+    """Top pixels of a table behind the robot (across < 0; the side-by-side room: table1 at its wall
+    behind and to the right of table2's assistant, whose right reach then measured 3.2-3.6 m) and of one
+    beyond a gap ahead are cut; the held table's top, from its near edge on, is kept."""
+    across = np.array([-1.0, -0.8, -0.6, 0.1, 0.3, 0.5, 0.6, 1.5, 1.7])
+    ok = np.ones(across.size, dtype=bool)
+    kept, top = _this_table(across, ok, ok.copy(), 0.3)
+    assert list(top) == [False, False, False, True, True, True, True, False, False]
+    assert list(kept) == list(top)

@@ -6,6 +6,7 @@ import itertools
 import math
 from dataclasses import replace
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -185,3 +186,19 @@ def test_where_no_way_keeps_keep_a_tight_one_is_taken_and_none_through_robots() 
             assert math.dist(p, (0.0, 0.2)) >= TIGHT - 0.01
     # a second robot closes it even at TIGHT: no way at all (the walker waits, machines/room_carry.yaml)
     assert plan_walk(replace(tight, robots=((0.0, 0.2), (0.0, -0.6))), start, goal) is None
+
+
+def test_a_place_on_another_table_is_not_taken() -> None:
+    other = footprint({"id": "t2", "x": 0.0, "y": 1.6, "length": 0.8, "width": 0.5}, 0.0)
+    assert place_for(TABLE, (0.0, 0.0), (0.0, 3.0), [], tops=[other]) == (0.0, -1.2)
+    assert place_for(TABLE, (0.0, 0.0), (0.0, 3.0), []) == (0.0, 1.2)
+
+
+def test_with_one_side_on_another_table_the_assistant_heads_for_an_end_of_the_free_side() -> None:
+    """Generated room close-34000: both robots of table1's pair headed for its one free place; the
+    assistant, finding its leader there, walked about it until its walk timed out (305 s)."""
+    other = footprint({"id": "t2", "x": 0.0, "y": 1.6, "length": 0.8, "width": 0.5}, 0.0)
+    leader, assistant = (0.0, -3.0), (2.0, -3.0)
+    assert place_for(TABLE, (0.0, 0.0), leader, [assistant], partner=assistant, leads=True, tops=[other]) == (0.0, -1.2)
+    end = place_for(TABLE, (0.0, 0.0), assistant, [leader], partner=leader, leads=False, tops=[other])
+    assert end == pytest.approx((1.0, -0.6))
