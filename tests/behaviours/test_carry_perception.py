@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from typing import Any
 
 import numpy as np
 import pytest
@@ -86,6 +87,19 @@ def test_no_table_no_edge() -> None:
         assert not near_edge(robot.image("down"), robot.camera_model("down")).found
 
 
+def _reaches(scenario: dict[str, Any]) -> dict[str, Any]:
+    """r1 at its table's edge looks down, then to each side: the side reach measured each way."""
+    with World(scenario_from_dict(scenario), 0) as world:
+        robot = world.robots["r1"]
+        look(world, 0.0, 0.5)
+        turn = near_edge(robot.image("down"), robot.camera_model("down")).turn
+        reach = {}
+        for side, yaw in (("left", 1.3), ("right", -1.3)):
+            look(world, yaw, 0.45)
+            reach[side] = side_extent(robot.image("forward"), robot.camera_model("forward"), side, turn)
+    return reach
+
+
 @pytest.mark.parametrize("other_x", [1.4, 1.6])
 def test_a_second_table_in_line_does_not_lengthen_the_side(other_x: float) -> None:
     """Another table of the room further along the same line (issue 10): the reach to that side
@@ -93,21 +107,16 @@ def test_a_second_table_in_line_does_not_lengthen_the_side(other_x: float) -> No
     scenario = at_table((0.0, 0.0, 0.0), None, table_x=0.0)
     del scenario["table"]
     scenario["tables"] = [{"x": 0.0}, {"x": other_x, "y": 0.0}]
-    with World(scenario_from_dict(scenario), 0) as world:
-        robot = world.robots["r1"]
-        look(world, 0.0, 0.5)
-        turn = near_edge(robot.image("down"), robot.camera_model("down")).turn
-        reach = {}
-        for side, yaw in (("left", 1.3), ("right", -1.3)):
-            look(world, yaw, 0.45)
-            reach[side] = side_extent(robot.image("forward"), robot.camera_model("forward"), side, turn)
+    reach = _reaches(scenario)
     assert reach["left"].lateral == pytest.approx(0.4, abs=0.02)
     assert reach["right"].lateral == pytest.approx(0.4, abs=0.02)
     assert not reach["right"].clipped
 
 
 @pytest.mark.parametrize(("other_y", "other_x"), [(1.5, 0.6), (1.4, 0.9), (1.2, 0.6), (1.6, 0.3)])
-def test_a_table_behind_reaching_past_the_end_does_not_lengthen_the_side(other_y: float, other_x: float) -> None:
+def test_a_table_behind_reaching_past_the_end_does_not_lengthen_the_side(
+    other_y: float, other_x: float
+) -> None:
     """Another table standing behind the held one, parallel, its end reaching past the held table's
     end on the right (generated room close-34000: table1 at its wall 1.4 m behind table2, whose
     leader then measured 0.33 m left and 1.07 m right and crabbed to and fro until the limit): the
@@ -115,14 +124,7 @@ def test_a_table_behind_reaching_past_the_end_does_not_lengthen_the_side(other_y
     scenario = at_table((0.0, 0.0, 0.0), (0.0, 0.0, 0.0), table_x=0.0)
     del scenario["table"]
     scenario["tables"] = [{"x": 0.0}, {"x": other_x, "y": other_y, "length": 1.04, "width": 0.42}]
-    with World(scenario_from_dict(scenario), 0) as world:
-        robot = world.robots["r1"]
-        look(world, 0.0, 0.5)
-        turn = near_edge(robot.image("down"), robot.camera_model("down")).turn
-        reach = {}
-        for side, yaw in (("left", 1.3), ("right", -1.3)):
-            look(world, yaw, 0.45)
-            reach[side] = side_extent(robot.image("forward"), robot.camera_model("forward"), side, turn)
+    reach = _reaches(scenario)
     assert reach["left"].lateral == pytest.approx(0.4, abs=0.02)
     assert reach["right"].lateral == pytest.approx(0.4, abs=0.02)
 
