@@ -14,34 +14,28 @@ from __future__ import annotations
 
 import math
 
-from hfsm_behaviours.room.walks import BODY, CELL, Point, Scene
+from hfsm_behaviours.room.walks import BODY, CELL, Point, Scene, samples
 
 MARGIN = 0.25  # metres a waiting robot's centre keeps outside a corridor (about its half width)
 REACH = 3.0  # metres at most a waiting robot steps aside
 
 
-def in_a_corridor(scene: Scene, p: Point, margin: float = MARGIN) -> bool:
-    return any(c.contains(p, margin) for c in scene.corridors)
-
-
-def _clear_line(scene: Scene, a: Point, b: Point, step: float = 0.1) -> bool:
+def _clear_line(scene: Scene, a: Point, b: Point) -> bool:
     """Whether the straight line from a to b keeps `BODY` m off every table's top (past its start)."""
-    n = max(1, math.ceil(math.dist(a, b) / step))
-    line = [(a[0] + (b[0] - a[0]) * k / n, a[1] + (b[1] - a[1]) * k / n) for k in range(1, n + 1)]
-    return not any(t.contains(p, BODY) for p in line for t in scene.tables)
+    return not any(t.contains(p, BODY) for p in samples(a, b)[1:] for t in scene.tables)
 
 
 def aside(scene: Scene, me: Point, reach: float = REACH) -> Point:
     """`me` when it stands in no corridor of the `scene`; else the nearest point of a `CELL` grid
     round it, within `reach` m, that is free (walls, tops, robots: `Scene.blocked`), in no corridor,
     and reached on a straight line clear of the tables' tops; `me` when there is none."""
-    if not in_a_corridor(scene, me):
+    if not scene.in_corridor(me, MARGIN):
         return me
     steps = int(reach / CELL)
     spots = sorted(((me[0] + i * CELL, me[1] + j * CELL) for i in range(-steps, steps + 1)
                     for j in range(-steps, steps + 1) if 0 < math.hypot(i, j) * CELL <= reach),
                    key=lambda p: (round(math.dist(p, me), 6), p))
     for p in spots:
-        if not scene.blocked(p) and not in_a_corridor(scene, p) and _clear_line(scene, me, p):
+        if not scene.blocked(p) and not scene.in_corridor(p, MARGIN) and _clear_line(scene, me, p):
             return (round(p[0], 4), round(p[1], 4))
     return me

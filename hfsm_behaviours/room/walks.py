@@ -65,8 +65,8 @@ class Scene:
             return True
         return any(math.dist(p, r) < self.keep for r in self.robots)
 
-    def in_corridor(self, p: Point) -> bool:
-        return any(c.contains(p) for c in self.corridors)
+    def in_corridor(self, p: Point, margin: float = 0.0) -> bool:
+        return any(c.contains(p, margin) for c in self.corridors)
 
 
 def table_where(table: Mapping[str, Any], done: bool, seen: Sequence[float] | None) -> Point:
@@ -176,7 +176,8 @@ def grid(scene: Scene) -> Any:
     return g
 
 
-def _samples(a: Point, b: Point, step: float = 0.1) -> list[Point]:
+def samples(a: Point, b: Point, step: float = 0.1) -> list[Point]:
+    """Points along the straight line from a to b, both ends included, at most `step` m apart."""
     n = max(1, math.ceil(math.dist(a, b) / step))
     return [(a[0] + (b[0] - a[0]) * k / n, a[1] + (b[1] - a[1]) * k / n) for k in range(n + 1)]
 
@@ -184,8 +185,7 @@ def _samples(a: Point, b: Point, step: float = 0.1) -> list[Point]:
 def _cost(points: Sequence[Point], scene: Scene) -> float:
     total = 0.0
     for a, b in itertools.pairwise(points):
-        samples = _samples(a, b)
-        for p, q in itertools.pairwise(samples):
+        for p, q in itertools.pairwise(samples(a, b)):
             mid = ((p[0] + q[0]) / 2, (p[1] + q[1]) / 2)
             total += math.dist(p, q) * (CORRIDOR if scene.in_corridor(mid) else 1.0)
     return total
@@ -200,7 +200,7 @@ def shorten(path: Sequence[Point], scene: Scene) -> list[Point]:
     while i < len(path) - 1:
         j = len(path) - 1
         while j > i + 1:
-            line = _samples(path[i], path[j])
+            line = samples(path[i], path[j])
             if (not any(scene.blocked(p) for p in line[1:-1])
                     and _cost([path[i], path[j]], scene) <= _cost(path[i:j + 1], scene) + 1e-6):
                 break

@@ -44,6 +44,13 @@ def _scene(tables: dict[str, Any], done: list[Any], seen: dict[str, Any], robots
     return Scene(width, depth, tuple(tops), tuple(lanes), tuple(robots))
 
 
+def _said(where: dict[str, Any] | None, starts: dict[str, Any] | None) -> dict[str, Point]:
+    """Where each robot last said it stands (`where`, room frame), else where it started (`starts`)."""
+    said = {str(r): (float(p["x"]), float(p["y"])) for r, p in (starts or {}).items()}
+    said.update({str(r): (float(p[0]), float(p[1])) for r, p in (where or {}).items()})
+    return said
+
+
 @primitive(outcomes=["walk", "here", "boxed"], outputs=["path", "walk", "face", "length", "standing"])
 def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose: dict[str, Any],
                tables: dict[str, Any], room: dict[str, Any], done: list[Any] | None = None,
@@ -64,8 +71,7 @@ def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
     table = tables[str(job["table"])]
     told = job.get("at") or [table["x"], table["y"]]
     at = (float(told[0]), float(told[1]))
-    said = {str(r): (float(p["x"]), float(p["y"])) for r, p in (starts or {}).items()}
-    said.update({str(r): (float(p[0]), float(p[1])) for r, p in (where or {}).items()})
+    said = _said(where, starts)
     others = [p for r, p in sorted(said.items()) if r != ctx.agent]
     mate = said.get(str(job.get("partner", "")))
     size = (float(room["width"]), float(room["depth"])) if room else None
@@ -100,8 +106,7 @@ def room_aside(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
     if not tables or not room or job.get("role") in ("leader", "assistant"):
         return Outcome("aside", spot=here)
     me = to_room(start, here)
-    said = {str(r): (float(p["x"]), float(p["y"])) for r, p in (starts or {}).items()}
-    said.update({str(r): (float(p[0]), float(p[1])) for r, p in (where or {}).items()})
+    said = _said(where, starts)
     others = [p for r, p in sorted(said.items()) if r != ctx.agent]
     spot = aside(_scene(tables, done or [], seen or {}, others, room), (me[0], me[1]))
     if spot == (me[0], me[1]):

@@ -7,7 +7,7 @@ import math
 from hypothesis import given
 from hypothesis import strategies as st
 
-from hfsm_behaviours.room.aside import aside, in_a_corridor
+from hfsm_behaviours.room.aside import MARGIN, aside
 from hfsm_behaviours.room.claims import footprint
 from hfsm_behaviours.room.walks import BODY, Scene, corridor
 
@@ -23,18 +23,18 @@ def test_walls_34001_the_spare_in_the_corridor_steps_out_of_it() -> None:
     """The table is carried north to the wall; a spare stands on its way 3.6 m ahead of it."""
     spot = aside(SCENE, (0.1, 3.6))
     assert spot != (0.1, 3.6)
-    assert not in_a_corridor(SCENE, spot)
+    assert not SCENE.in_corridor(spot, MARGIN)
     assert math.dist(spot, (0.1, 3.6)) < 1.5
 
 
 def test_the_step_aside_never_crosses_a_top() -> None:
     spot = aside(SCENE, (0.0, 1.0))
-    assert not in_a_corridor(SCENE, spot)
+    assert not SCENE.in_corridor(spot, MARGIN)
     assert not SCENE.tables[0].contains(spot, BODY)
 
 
 @given(st.floats(-3.6, 3.6), st.floats(-4.6, 4.6))
 def test_a_spot_is_out_of_every_corridor_or_where_it_stood(x: float, y: float) -> None:
     spot = aside(SCENE, (x, y))
-    assert spot == (x, y) or (not in_a_corridor(SCENE, spot) and not SCENE.blocked(spot))
+    assert spot == (x, y) or (not SCENE.in_corridor(spot, MARGIN) and not SCENE.blocked(spot))
     assert math.dist(spot, (x, y)) <= 3.0 + 1e-6
