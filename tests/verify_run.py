@@ -10,6 +10,7 @@ import pytest
 
 from hfsm.cli import run as run_cli
 from hfsm.cli import verify as verify_cli
+from hfsm.verify import search, snapshot
 from hfsm.verify.choices import Chooser
 from hfsm.verify.step import next_state
 
@@ -58,3 +59,24 @@ class NoCapture:
             err = ""
 
         return Out()
+
+
+def reached_states(
+    runs: list[tuple[Path, list[str]]], folder: Path, *, each: int, max_states: int
+) -> list[tuple[bytes, Any]]:
+    """States searches reach (as their copies' bytes, at most `each` a search, none ended), each with
+    the search that made it (kept open, so that its copies still load)."""
+    found: list[tuple[bytes, Any]] = []
+    visit = search._Search.visit
+
+    def recording(self: search._Search, engine: Any, ended: Any, parent: int) -> bool:
+        if ended is None and engine.running and sum(s is self for _, s in found) < each:
+            found.append((self.snaps.dump(engine), self))
+        return visit(self, engine, ended, parent)
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(search._Search, "visit", recording)
+        patch.setattr(snapshot.Snapshots, "close", lambda self: None)
+        for file, args in runs:
+            verify(NoCapture(), file, *args, "--max-states", str(max_states), out=folder / "ce.jsonl")  # type: ignore[arg-type]
+    return found

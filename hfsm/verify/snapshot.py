@@ -32,11 +32,11 @@ from typing import Any
 _ATOMS = (str, int, float, bool, bytes, type(None))
 _CONTAINERS = (dict, list, tuple, set, frozenset)
 _PROTOCOL = 3  # memo writes name their index (BINPUT), see the module's docstring
-_FRAME = b"\x80\x04\x95"
+_FRAME = b"\x80\x04\x95"  # PROTO 4, FRAME: what follows is one frame of the length written next
 _TABLES: dict[int, list[Any]] = {}  # a Snapshots' shared objects left out of its table, by its number
 _NUMBERS = itertools.count()
 STATE_MODULES = ("hfsm.runtime", "hfsm.builtins", "hfsm.verify", "hfsm.primitive", "hfsm.world")
-_RUNTIME = "hfsm.runtime"  # PROTO 4, FRAME: what follows is one frame of the length written next
+_RUNTIME = "hfsm.runtime"
 
 
 def shared_objects(roots: Iterable[Any]) -> dict[int, Any]:
@@ -63,10 +63,15 @@ def shared_objects(roots: Iterable[Any]) -> dict[int, Any]:
     return found
 
 
+def sharable(shared: dict[int, Any]) -> list[Any]:
+    """Of the `shared` objects, those a state's copy writes as references: not containers nor
+    functions (those a state holds are its own)."""
+    return [o for o in shared.values() if not isinstance(o, _CONTAINERS) and not callable(o)]
+
+
 def shared_numbers(shared: dict[int, Any]) -> dict[int, int]:
     """The objects a state's key writes as a number (`canon`): those `Snapshots` shares."""
-    objects = [o for o in shared.values() if not isinstance(o, _CONTAINERS) and not callable(o)]
-    return {id(o): i for i, o in enumerate(objects)}
+    return {id(o): i for i, o in enumerate(sharable(shared))}
 
 
 def state_parts(state: Any, shared: dict[int, Any]) -> tuple[list[type], list[str], list[Any]]:
@@ -134,7 +139,7 @@ class Snapshots:
 
     def __init__(self, shared: dict[int, Any]) -> None:
         self.shared = shared
-        self.objects = [o for o in shared.values() if not isinstance(o, _CONTAINERS) and not callable(o)]
+        self.objects = sharable(shared)
         self.number = next(_NUMBERS)
         self.seed: list[Any] = []
         self.table: dict[Any, Any] = {}

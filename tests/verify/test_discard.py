@@ -9,9 +9,9 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from verify_run import DATA, MACHINES, NoCapture, verify
+from verify_run import DATA, MACHINES, reached_states, verify
 
-from hfsm.verify import search, snapshot
+from hfsm.verify import search
 from hfsm.verify.step import discard
 
 RUNS = [
@@ -25,21 +25,7 @@ RUNS = [
 
 @pytest.fixture(scope="module")
 def reached(tmp_path_factory: pytest.TempPathFactory) -> list[tuple[bytes, Any]]:
-    found: list[tuple[bytes, Any]] = []
-    visit = search._Search.visit
-
-    def recording(self: search._Search, engine: Any, ended: Any, parent: int) -> bool:
-        if ended is None and engine.running and sum(s is self for _, s in found) < 60:
-            found.append((self.snaps.dump(engine), self))
-        return visit(self, engine, ended, parent)
-
-    folder = tmp_path_factory.mktemp("discard")
-    with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(search._Search, "visit", recording)
-        patch.setattr(snapshot.Snapshots, "close", lambda self: None)
-        for file, args in RUNS:
-            verify(NoCapture(), file, *args, "--max-states", "300", out=folder / "ce.jsonl")  # type: ignore[arg-type]
-    return found
+    return reached_states(RUNS, tmp_path_factory.mktemp("discard"), each=60, max_states=300)
 
 
 def _cyclic_garbage(make: Any) -> list[Any]:

@@ -6,20 +6,18 @@ same states."""
 from __future__ import annotations
 
 import itertools
-from pathlib import Path
 from typing import Any
 
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from verify_run import DATA, NoCapture, prefixes, verify
+from verify_run import DATA, prefixes, reached_states
 
 from hfsm.builtins.barrier import Barrier
 from hfsm.runtime.clock import RunClock
 from hfsm.runtime.engine import Engine, restore_engine
 from hfsm.runtime.team import Team
 from hfsm.trace import ListTrace
-from hfsm.verify import search, snapshot
 from hfsm.verify.choices import Chooser
 from hfsm.verify.step import next_state
 from hfsm.world import NullWorld
@@ -31,27 +29,10 @@ RUNS = [  # a barrier of three, messages late and lost, a failure; scoped pairs
 ]
 
 
-def _reached(folder: Path) -> list[tuple[bytes, Any]]:
-    """States the search reaches (as its copies' bytes), each with the search that made it."""
-    found: list[tuple[bytes, Any]] = []
-    visit = search._Search.visit
-
-    def recording(self: search._Search, engine: Any, ended: Any, parent: int) -> bool:
-        if ended is None and engine.running and sum(s is self for _, s in found) < 40:
-            found.append((self.snaps.dump(engine), self))
-        return visit(self, engine, ended, parent)
-
-    with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(search._Search, "visit", recording)
-        patch.setattr(snapshot.Snapshots, "close", lambda self: None)
-        for file, args in RUNS:
-            verify(NoCapture(), DATA / file, *args, "--max-states", "200", out=folder / "ce.jsonl")  # type: ignore[arg-type]
-    return found
-
-
 @pytest.fixture(scope="module")
 def reached(tmp_path_factory: pytest.TempPathFactory) -> list[tuple[bytes, Any]]:
-    return _reached(tmp_path_factory.mktemp("enginestate"))
+    runs = [(DATA / file, args) for file, args in RUNS]
+    return reached_states(runs, tmp_path_factory.mktemp("enginestate"), each=40, max_states=200)
 
 
 def _everything(root: Any, shared: dict[int, Any]) -> list[Any]:
