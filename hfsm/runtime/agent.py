@@ -86,7 +86,8 @@ class Frame:
         self.params = params
         self.vars = machine.fresh_vars() if machine.var_init else {}
         self.vars_shown = not self.vars or machine.untraced.issuperset(self.vars)
-        self.vars_new: set[str] | None = None  # while not vars_shown: the vars changed since (None: all)
+        # while not vars_shown: the vars changed since (None: all); sorted, as Team.fresh
+        self.vars_new: dict[str, None] | None = None
         self.agent = agent
         self.up = up
         self._scope: Scope | None = None
@@ -110,10 +111,10 @@ class Frame:
         quiet = self.machine.untraced
         new = [n for n in names if n not in quiet] if quiet else names
         if self.vars_shown:
-            self.vars_new = set(new)
+            self.vars_new = dict.fromkeys(sorted(new))
             self.vars_shown = not self.vars_new
         elif self.vars_new is not None:
-            self.vars_new.update(new)
+            self.vars_new = dict.fromkeys(sorted({*self.vars_new, *new}))
 
     @property
     def scope(self) -> Scope:

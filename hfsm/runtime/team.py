@@ -46,8 +46,10 @@ class Team:
         self.rounds: dict[str, dict[str, int]] = {name: {} for name in names}
         self.heard: dict[str, dict[tuple[str, str], int]] = {name: {} for name in names}
         self.waiting: list[Waiting] = []
-        # Notices in flight that raise what their receiver holds: (to, name, sender, round).
-        self.fresh: set[tuple[str, str, str, int]] = set()
+        # Notices in flight that raise what their receiver holds: (to, name, sender, round), kept
+        # sorted (not a set, whose order follows the string hashes of the process and its history):
+        # equal states are copied to equal bytes, and a copy's bytes survive a load.
+        self.fresh: dict[tuple[str, str, str, int], None] = {}
 
     def enter(self, agent: str, name: str) -> int:
         rounds = self.rounds[agent]
@@ -59,7 +61,9 @@ class Team:
 
     def post(self, sender: str, to: str, name: str, round_: int, *, answer: bool) -> None:
         if self.heard[to].get((name, sender), 0) < round_:
-            self.fresh.add((to, name, sender, round_))
+            notice = (to, name, sender, round_)
+            if notice not in self.fresh:
+                self.fresh = dict.fromkeys(sorted([*self.fresh, notice]))
         data = {"barrier": name, "round": round_, "answer": answer}
         self.world.post(Message(NOTICE, sender, to, data, self.clock.tick))
 
@@ -67,7 +71,7 @@ class Team:
         """A notice enters its receiver (who has not failed) at the start of a tick; answer it if due."""
         to, sender = message.to, message.sender
         name, round_ = message.data["barrier"], message.data["round"]
-        self.fresh.discard((to, name, sender, round_))
+        self.fresh.pop((to, name, sender, round_), None)
         heard = self.heard[to]
         if heard.get((name, sender), 0) < round_:
             heard[name, sender] = round_
