@@ -27,7 +27,7 @@ from __future__ import annotations
 import itertools
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import networkx as nx
@@ -103,22 +103,21 @@ def place_for(table: Mapping[str, Any], at: Point, me: Point, others: Sequence[P
     standing at one keeps it); when both ways are as near, the pair's leader (`leads`: this robot,
     else the partner) takes the place the rule above gives it and the other robot the other place:
     two robots walking to one table never head for the same side. A place no robot can stand at
-    (within `WALL` m of a wall of the `room`, {width, depth} centred on the origin, or beyond it) is
-    not taken while the other is: both robots then head for the other side. Nor is a place within
-    `BODY` m of another table's top (`tops`, where they stand): walking there pushes that table; then
-    the assistant of a pair (`leads` false) heads for the free side's end nearer to it (`beyond`),
-    from where the paper's assistant walks round to its side, rather than for its leader's place."""
+    (within `WALL` m of a wall of the `room`, {width, depth} centred on the origin, or beyond it), or
+    within `BODY` m of another table's top (`tops`, where they stand: walking there pushes that
+    table), is not taken while the other is: the robot alone or the pair's leader takes the free
+    place and the assistant (`leads` false) heads for the free side's end nearer to it (`beyond`),
+    from where the paper's assistant walks round to its side, rather than for its leader's place
+    (the second to arrive would find the first standing there and walk about it)."""
     sides = places(table, at, gap)
-    if room is not None:
-        free = [p for p in sides if standable(p, room)]
-        if len(free) == 1:
-            return free[0]
-    free = [p for p in sides if not any(t.contains(p, BODY) for t in tops)]
+
+    def standing(p: Point) -> bool:
+        return (room is None or standable(p, room)) and not any(t.contains(p, BODY) for t in tops)
+    free = [p for p in sides if standing(p)]
     if len(free) == 1:
         if partner is None or leads:
             return free[0]
-        ends = [p for p in beyond(table, at, free[0]) if (room is None or standable(p, room))
-                and not any(t.contains(p, BODY) for t in tops)]
+        ends = [p for p in beyond(table, at, free[0]) if standing(p)]
         return min(ends, key=lambda p: (math.dist(p, me), p)) if ends else free[0]
 
     def key(p: Point, who: Point) -> tuple[int, float]:
@@ -232,6 +231,17 @@ def plan_walk(scene: Scene, start: Point, goal: Point) -> list[Point] | None:
         return None
     points = [start, *(_point(n, scene) for n in nodes[1:-1]), goal]
     return [(round(x, 4), round(y, 4)) for x, y in shorten(points, scene)[1:]]
+
+
+def way_to(scene: Scene, start: Point, goal: Point, wait: bool) -> list[Point] | None:
+    """The way from `start` to `goal`: one keeping `scene.keep` m off the robots standing, else one
+    keeping `TIGHT` m; where neither is free, None when the walker may wait for them to move (`wait`),
+    else a way round the walls, tables and corridors alone (the robots standing on it are sensed and
+    stepped round as it walks), the straight line only where even that is closed."""
+    points = plan_walk(scene, start, goal) or plan_walk(replace(scene, keep=TIGHT), start, goal)
+    if points is not None or wait:
+        return points
+    return plan_walk(replace(scene, robots=()), start, goal) or [goal]
 
 
 def _segment_gap(a: Point, b: Point, c: Point, d: Point) -> float:

@@ -13,7 +13,6 @@ from hfsm_behaviours.room.aside import aside
 from hfsm_behaviours.room.claims import footprint
 from hfsm_behaviours.room.frames import to_local, to_room
 from hfsm_behaviours.room.walks import (
-    TIGHT,
     Point,
     Scene,
     conflict,
@@ -23,8 +22,8 @@ from hfsm_behaviours.room.walks import (
     head,
     left_of,
     place_for,
-    plan_walk,
     table_where,
+    way_to,
 )
 
 WALK = "room_walk"
@@ -64,7 +63,7 @@ def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
     table, in its own start frame; `length`: the way's metres (0 when here); `standing`: where the
     other robots stand as it knows it ({robot: [x, y]}, room frame: for room_give_way). Where no way
     keeps `walks.TIGHT` m off the robots standing either, `boxed` with `wait` (the robot waits for
-    them to move and plans again), else the straight line to its place."""
+    them to move and plans again), else a way round the tables alone (`walks.way_to`)."""
     me_local = [float(pose["x"]), float(pose["y"])]
     x, y = to_room(start, me_local)
     me = (x, y)
@@ -83,10 +82,9 @@ def room_route(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
     if math.dist(me, goal) <= near:
         return Outcome("here", path=[], walk=[], face=to_local(start, at), length=0.0, standing={})
     scene = replace(scene, tables=(*scene.tables, footprint(table, 0.0, at)))
-    points = plan_walk(scene, me, goal) or plan_walk(replace(scene, keep=TIGHT), me, goal)
-    if points is None and wait:
+    points = way_to(scene, me, goal, wait)
+    if points is None:
         return Outcome("boxed", path=[], walk=[], face=to_local(start, at), length=0.0, standing={})
-    points = points or [goal]
     length = sum(math.dist(a, b) for a, b in zip([me, *points], points, strict=False))
     return Outcome("walk", path=[to_local(start, p) for p in points], face=to_local(start, at),
                    walk=[[round(p[0], 4), round(p[1], 4)] for p in [me, *points]], length=round(length, 3),
