@@ -54,11 +54,14 @@ def room_news(ctx: Context, *, team: list[Any], lost: list[Any], done: list[Any]
 
 
 @primitive(outcomes=["heard"], outputs=["news"])
-def room_hear(ctx: Context, *, news: dict[str, Any], sender: str, data: dict[str, Any],
-              pose: dict[str, Any] | None = None, start: dict[str, Any] | None = None) -> Outcome:
-    """A teammate's heartbeat merged into the news: its sender heard now, where it stands (`pose`
-    from its `start`, room frame), its news added (a later sighting replaces an earlier one)."""
-    return Outcome("heard", news=team_news.hear(news, sender, data, pose, start, ctx.tick))
+def room_hear(ctx: Context, *, news: dict[str, Any], heard: list[Any]) -> Outcome:
+    """Teammates' heartbeats merged into the news, oldest first (`heard`: wait_for's `messages`, each
+    its `sender`, its news `data` and where it stands, `pose` from its `start`, room frame): each
+    sender heard now, its news added (a later sighting replaces an earlier one)."""
+    for message in heard:
+        news = team_news.hear(news, str(message.get("sender", "")), message.get("data"), message.get("pose"),
+                              message.get("start"), ctx.tick)
+    return Outcome("heard", news=news)
 
 
 @primitive(outcomes=["changed", "same"], outputs=["news", "wake", "lost", "done", "seen", "spent", "sliding",
