@@ -10,7 +10,7 @@ from typing import Any
 
 from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.room.aside import aside
-from hfsm_behaviours.room.claims import footprint
+from hfsm_behaviours.room.claims import Rect, footprint
 from hfsm_behaviours.room.frames import to_local, to_room
 from hfsm_behaviours.room.walks import (
     Point,
@@ -96,17 +96,26 @@ def room_aside(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
                tables: dict[str, Any], room: dict[str, Any], done: list[Any] | None = None,
                seen: dict[str, Any] | None = None, where: dict[str, Any] | None = None,
                starts: dict[str, Any] | None = None) -> Outcome:
-    """Where this robot waits (`spot`, [x, y] in its own start frame): a spare or an idle robot
-    standing in a claimed corridor of a table not yet done steps to the nearest point out of every
-    such corridor (hfsm_behaviours.room.aside, round the tables and the robots where the team
-    believes them); a leader or an assistant, or a robot in no corridor, waits where it stands."""
+    """Where this robot waits (`spot`, [x, y] in its own start frame): a robot standing in a claimed
+    corridor of a table not yet done, or beside another table still to be carried (its own, for a
+    leader or an assistant, is not another), steps to the nearest point out of their way
+    (hfsm_behaviours.room.aside, round the tables and the robots where the team believes them);
+    any other robot waits where it stands."""
     here = [float(pose["x"]), float(pose["y"])]
-    if not tables or not room or job.get("role") in ("leader", "assistant"):
+    if not tables or not room:
         return Outcome("aside", spot=here)
     me = to_room(start, here)
     said = _said(where, starts)
     others = [p for r, p in sorted(said.items()) if r != ctx.agent]
-    spot = aside(_scene(tables, done or [], seen or {}, others, room), (me[0], me[1]))
+    finished = {str(t) for t in done or []}
+    own = str(job.get("table", "")) if job.get("role") in ("leader", "assistant") else ""
+    sights = seen or {}
+
+    def top(tid: str, t: dict[str, Any]) -> Rect:
+        sight = sights.get(tid)
+        return footprint(t, 0.0, table_where(t, False, [sight["x"], sight["y"]] if sight else None))
+    busy = tuple(top(tid, t) for tid, t in sorted(tables.items()) if tid not in finished and tid != own)
+    spot = aside(_scene(tables, done or [], seen or {}, others, room), (me[0], me[1]), busy=busy)
     if spot == (me[0], me[1]):
         return Outcome("aside", spot=here)
     return Outcome("aside", spot=[round(v, 6) for v in to_local(start, spot)])

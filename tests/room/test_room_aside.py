@@ -7,7 +7,7 @@ import math
 from hypothesis import given
 from hypothesis import strategies as st
 
-from hfsm_behaviours.room.aside import MARGIN, aside
+from hfsm_behaviours.room.aside import MARGIN, NEAR, aside, in_the_way
 from hfsm_behaviours.room.claims import footprint
 from hfsm_behaviours.room.walks import BODY, Scene, corridor
 
@@ -38,3 +38,27 @@ def test_a_spot_is_out_of_every_corridor_or_where_it_stood(x: float, y: float) -
     spot = aside(SCENE, (x, y))
     assert spot == (x, y) or (not SCENE.in_corridor(spot, MARGIN) and not SCENE.blocked(spot))
     assert math.dist(spot, (x, y)) <= 3.0 + 1e-6
+
+
+OTHER = {"id": "table2", "x": 2.5, "y": -2.0, "yaw": 284.0, "length": 1.17, "width": 0.48, "toward": [2.0, -4.5]}
+
+
+def test_a_robot_waiting_beside_another_table_still_to_be_carried_steps_away_from_it() -> None:
+    """Held-out room narrow-38000: a leader waiting its turn 0.45 m from the top of the table another
+    pair carried first was walked into three times by that pair's assistant stepping in to lift."""
+    busy = (footprint(OTHER, 0.0),)
+    scene = Scene(8.0, 10.0, (*SCENE.tables, *busy), SCENE.corridors)
+    me = (3.2, -2.1)
+    assert busy[0].contains(me, NEAR) and not scene.in_corridor(me, MARGIN)
+    spot = aside(scene, me, busy=busy)
+    assert not in_the_way(scene, spot, busy) and not scene.blocked(spot)
+    assert math.dist(spot, me) <= 3.0
+    assert aside(scene, me) == me  # its own table (or one done): not in its way
+
+
+@given(st.floats(-3.6, 3.6), st.floats(-4.6, 4.6))
+def test_a_spot_is_out_of_the_way_of_busy_tables_or_where_it_stood(x: float, y: float) -> None:
+    busy = (footprint(OTHER, 0.0),)
+    scene = Scene(8.0, 10.0, (*SCENE.tables, *busy), SCENE.corridors)
+    spot = aside(scene, (x, y), busy=busy)
+    assert spot == (x, y) or (not in_the_way(scene, spot, busy) and not scene.blocked(spot))
