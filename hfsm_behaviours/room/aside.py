@@ -17,12 +17,11 @@ from __future__ import annotations
 
 import math
 
-from hfsm_behaviours.room.claims import Rect
+from hfsm_behaviours.room.claims import NEAR, Rect
 from hfsm_behaviours.room.walks import BODY, CELL, Point, Scene, samples
 
 MARGIN = 0.25  # metres a waiting robot's centre keeps outside a corridor (about its half width)
 REACH = 3.0  # metres at most a waiting robot steps aside
-NEAR = 0.9  # metres from a busy table's top within which a waiting robot is in its pair's way
 
 
 def _clear_line(scene: Scene, a: Point, b: Point) -> bool:

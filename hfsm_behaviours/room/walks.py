@@ -32,7 +32,7 @@ from typing import Any
 
 import networkx as nx
 
-from hfsm_behaviours.room.claims import Rect, way
+from hfsm_behaviours.room.claims import GAP, Rect, way
 from hfsm_behaviours.room.frames import at_wall
 
 Point = tuple[float, float]
@@ -41,7 +41,6 @@ BODY = 0.4  # metres from a walker's centre to a wall or a table's top, at least
 KEEP = 0.8  # metres from a walker's centre to a robot standing still, at least
 TIGHT = 0.6  # the same where no way keeps KEEP: a body's width and a little, never less
 CORRIDOR = 4.0  # a metre walked in a claimed corridor costs this many
-GAP = 1.2  # metres from a table's centre line to a robot's place beside it
 HALF = 0.45  # half the width of the strip a walker sweeps
 WALL = 0.35  # metres from a wall within which no robot stands
 HEAD = 2.0  # metres of its way a walker about to set off keeps clear of an earlier walker's

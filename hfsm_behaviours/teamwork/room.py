@@ -13,6 +13,7 @@ from typing import Any
 from hfsm.primitive import Context, Outcome, primitive
 from hfsm.runtime.program import span_ticks
 from hfsm_behaviours.room import news as team_news
+from hfsm_behaviours.room.claims import footprint
 from hfsm_behaviours.room.frames import ahead, at_wall, relocalise, to_room
 from hfsm_behaviours.room.plan import make_room_plan
 from hfsm_behaviours.teamwork.plans import coefficients_from
@@ -31,12 +32,22 @@ def room_allocate(ctx: Context, *, mine: dict[str, Any], heard: dict[str, Any], 
 @primitive(outcomes=["located"], outputs=["seen"])
 def room_locate(ctx: Context, *, seen: dict[str, Any], table: str, start: dict[str, Any],
                 pose: dict[str, Any],
-                table_at: list[Any] | None = None, reach: float = 0.55) -> Outcome:
+                table_at: list[Any] | None = None, reach: float = 0.55,
+                tables: dict[str, Any] | None = None, done: list[Any] | None = None,
+                margin: float = 0.3) -> Outcome:
     """Where this robot, left with a dropped `table`, believes it is, in the room's frame, added to
     `seen`: `table_at` (its own estimate, start frame) when it has one, else `reach` m ahead of it
-    (it faced the table it held)."""
+    (it faced the table it held). A place within `margin` m of a table already at its wall (`done`,
+    of the plan's `tables`) is that table, not this one (the robot saw the nearest table and took it
+    for its own): the team's sighting is left as it was."""
     local = [float(v) for v in table_at] if table_at else ahead(pose, reach)
     x, y = to_room(start, local)
+    for tid in sorted(str(t) for t in done or []):
+        other = (tables or {}).get(tid)
+        if tid != table and other is not None:
+            wx, wy = at_wall(other)
+            if footprint(other, 0.0, (wx, wy)).contains((x, y), margin):
+                return Outcome("located", seen=seen)
     sight = {"x": x, "y": y, "t": round(ctx.time, 6), "by": ctx.agent}
     return Outcome("located", seen={**seen, table: sight})
 

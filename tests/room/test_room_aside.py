@@ -7,8 +7,8 @@ import math
 from hypothesis import given
 from hypothesis import strategies as st
 
-from hfsm_behaviours.room.aside import MARGIN, NEAR, aside, in_the_way
-from hfsm_behaviours.room.claims import footprint
+from hfsm_behaviours.room.aside import MARGIN, aside, in_the_way
+from hfsm_behaviours.room.claims import NEAR, footprint
 from hfsm_behaviours.room.walks import BODY, Scene, corridor
 
 TABLE = {"id": "table1", "x": 0.0, "y": 0.0, "yaw": 90.0, "length": 1.1, "width": 0.8, "toward": [0.0, 4.5]}

@@ -79,3 +79,17 @@ def test_tables_side_by_side_are_carried_to_opposite_walls() -> None:
 def test_tables_far_apart_on_one_wall_are_not_side_by_side() -> None:
     tables = [{"id": "a", "x": 0.0, "y": -1.5, "yaw": 0}, {"id": "b", "x": 0.0, "y": 1.5, "yaw": 0}]
     assert side_by_side([way(t, 1, 7.0, 5.0, 0.5) for t in tables], tables) == 0
+
+
+def test_tables_whose_places_crowd_each_other_take_turns() -> None:
+    """Held-out room walls-39001: two tables 2 m apart (1.4 m between their sides), both carried to the
+    north wall 0.85 m away; each pair's place between them lay within 0.5 m of the other table, and
+    table2's assistant walking round its table met table1's assistant standing at its place (4
+    contacts). A place within NEAR m of the other's top: the pairs take turns."""
+    tables = [{"id": "table1", "x": 0.36, "y": 4.1, "yaw": 82.0, "length": 0.68, "width": 0.65},
+              {"id": "table2", "x": 2.36, "y": 4.11, "yaw": 74.0, "length": 0.62, "width": 0.54}]
+    got = waits(tables, 7.5, 9.9)
+    assert sorted([got["table1"], got["table2"]]) == [[], ["table1"]] or sorted(
+        [got["table1"], got["table2"]]) == [[], ["table2"]]
+    apart = [{**tables[0], "x": -1.5}, tables[1]]  # 3.9 m apart: no place near the other
+    assert waits(apart, 7.5, 9.9) == {"table1": [], "table2": []}

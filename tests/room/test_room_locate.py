@@ -1,0 +1,35 @@
+"""room_locate: where a robot left with a dropped table says that table is; never on a table already
+at its wall (held-out room close-39000)."""
+
+from __future__ import annotations
+
+from types import SimpleNamespace
+from typing import Any
+
+from hfsm_behaviours.teamwork.room import room_locate
+
+START = {"x": 0.0, "y": 0.0, "yaw": 0.0}
+TABLES: dict[str, Any] = {
+    "table2": {"id": "table2", "x": 0.09, "y": -1.0, "yaw": 71.0, "length": 1.02, "width": 0.88,
+               "toward": [-0.306, -2.15]},
+    "table4": {"id": "table4", "x": -3.55, "y": -0.74, "yaw": 116.0, "length": 0.83, "width": 0.54,
+               "toward": [-2.862297, -2.15]},
+}
+
+
+def locate(table_at: list[float], done: list[str]) -> dict[str, Any]:
+    ctx = SimpleNamespace(time=731.8, agent="r7")
+    seen = {"table2": {"x": 0.09, "y": -1.0, "t": 704.65, "by": "r4"}}
+    out = room_locate.fn(ctx, seen=seen, table="table2", start=START, pose={"x": 0.0, "y": 0.0, "yaw": 0.0},
+                         table_at=table_at, tables=TABLES, done=done)
+    return dict(out.outputs["seen"])
+
+
+def test_a_place_on_a_table_at_its_wall_is_that_table_not_the_dropped_one() -> None:
+    """close-39000: table2's assistant, its carry failed before any lift, took table4 (at its wall
+    beside it) for table2 and said table2 was there; its pair then worked at table4, walking into
+    the robot that had just put it there (16 contacts)."""
+    on_table4 = [-2.988039, -1.332541]  # what it said (its start frame is the room's here)
+    assert locate(on_table4, ["table4"])["table2"]["by"] == "r4"  # left as it was
+    assert locate(on_table4, [])["table2"]["by"] == "r7"  # table4 not at its wall yet: believed
+    assert locate([-1.5, -1.2], ["table4"])["table2"] == {"x": -1.5, "y": -1.2, "t": 731.8, "by": "r7"}
