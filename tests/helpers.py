@@ -62,6 +62,30 @@ def write(folder: Path, name: str, text: str) -> Path:
     return path
 
 
+def sender_states(message: str, keep: str = "all") -> str:
+    """Machine states (YAML, at the indentation of a `states:` entry) of a sender: `say` sends
+    `message` to agent b with data {n}, `params.times` times 0.05 s apart, then goes to `done`;
+    `keep` is send's (a literal or an expression). Needs `vars.n` and `params.times`."""
+    return f"""
+  say:
+    do: send
+    with: {{message: {message}, to: b, keep: "{keep}", data: {{n: "${{vars.n}}"}}}}
+    on: {{sent: count}}
+  count:
+    do: set
+    with: {{n: "${{vars.n + 1}}"}}
+    on: {{done: more}}
+  more:
+    choose:
+      - if: "vars.n < params.times"
+        then: pause
+      - else: done
+  pause:
+    do: wait
+    with: {{seconds: 0.05}}
+    on: {{done: say}}"""
+
+
 def execute(
     path: Path,
     *,

@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 
 from hfsm.primitive import Context, primitive
 from hfsm.registry import Registry
-from tests.helpers import execute, write
+from tests.helpers import execute, sender_states, write
 
 TALK = """
 params:
@@ -29,23 +29,7 @@ states:
       - if: "agent.id == 'a'"
         then: say
       - else: later
-  say:
-    do: send
-    with: {message: status, to: b, keep: "${params.keep}", data: {n: "${vars.n}"}}
-    on: {sent: count}
-  count:
-    do: set
-    with: {n: "${vars.n + 1}"}
-    on: {done: more}
-  more:
-    choose:
-      - if: "vars.n < params.times"
-        then: pause
-      - else: done
-  pause:
-    do: wait
-    with: {seconds: 0.05}
-    on: {done: say}
+""" + sender_states("status", "${params.keep}") + """
   later:
     do: wait
     with: {seconds: 1}

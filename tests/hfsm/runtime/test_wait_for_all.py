@@ -10,7 +10,7 @@ from typing import Any
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from tests.helpers import execute, write
+from tests.helpers import execute, sender_states, write
 
 TALK = """
 params:
@@ -25,23 +25,7 @@ states:
       - if: "agent.id == 'b'"
         then: later
       - else: say
-  say:
-    do: send
-    with: {message: news, to: b, data: {n: "${vars.n}"}}
-    on: {sent: count}
-  count:
-    do: set
-    with: {n: "${vars.n + 1}"}
-    on: {done: more}
-  more:
-    choose:
-      - if: "vars.n < params.times"
-        then: pause
-      - else: done
-  pause:
-    do: wait
-    with: {seconds: 0.05}
-    on: {done: say}
+""" + sender_states("news") + """
   later:
     do: wait
     with: {seconds: 1}
