@@ -18,7 +18,7 @@ from typing import Any
 Point = tuple[float, float]
 GRAZING = 50.0  # degrees from square on beyond which a way is carried only when no other is free
 BESIDE = 0.5  # metres round a table at its wall where its pair stands: two such closer meet
-GAP = 1.2  # metres from a table's centre line to a robot's place beside it (walks.places)
+GAP = 1.2  # metres from a table's centre line to a robot's place beside it (`places`)
 NEAR = 0.9  # metres from another table's top within which a pair standing at its place is in the way
 
 
@@ -105,6 +105,13 @@ def way(table: Mapping[str, Any], sign: int, width: float, depth: float, reach: 
     return Way(str(table["id"]), sign, round(travel, 6), toward, corridor, round(square, 6))
 
 
+def places(table: Mapping[str, Any], at: Point, gap: float = GAP) -> list[Point]:
+    """The two places beside a table standing at `at`: the middles of its long sides, `gap` m out."""
+    yaw = math.radians(float(table.get("yaw", 0.0)))
+    nx_, ny_ = -math.sin(yaw), math.cos(yaw)
+    return [(at[0] + s * gap * nx_, at[1] + s * gap * ny_) for s in (1, -1)]
+
+
 def footprint(table: Mapping[str, Any], reach: float, at: Point | None = None) -> Rect:
     """The table's top grown by `reach` each side, where it stands (or at `at`, heading unchanged)."""
     yaw = math.radians(float(table.get("yaw", 0.0)))
@@ -157,10 +164,10 @@ def claim_walls(tables: Sequence[Mapping[str, Any]], width: float, depth: float,
 
 
 def turns(ways: Mapping[str, Way], tables: Sequence[Mapping[str, Any]], reach: float = 0.5,
-          places: float = 0.5) -> dict[str, list[str]]:
+          stand: float = 0.5) -> dict[str, list[str]]:
     """The tables each table's pair waits for, so that pairs whose ways meet take turns: two tables
     whose corridors overlap, one whose corridor runs over the other where it stands, or whose standing
-    places overlap (tops closer than 2 x `places` m, where the robots stand, or a place of one
+    places overlap (tops closer than 2 x `stand` m, where the robots stand, or a place of one
     pair within `NEAR` m of the other's top: held-out room walls-39001, where two tables 1.4 m
     apart had their pairs' places crossed and an assistant walking round one met the other's).
     The first to go is the one standing in the more corridors of the others (it clears their way),
@@ -168,18 +175,15 @@ def turns(ways: Mapping[str, Way], tables: Sequence[Mapping[str, Any]], reach: f
     ever wait for each other, and every robot computes the same turns from the same claims."""
     by_id = {str(t["id"]): t for t in tables}
     tops = {tid: footprint(t, 0.0) for tid, t in by_id.items()}
-    stands = {tid: footprint(t, places) for tid, t in by_id.items()}
+    stands = {tid: footprint(t, stand) for tid, t in by_id.items()}
 
     def blocks(a: str) -> int:
         return sum(overlap(tops[a], ways[b].corridor) for b in ways if b != a)
 
     def crowds(a: str, b: str) -> bool:
-        """A place of a's pair (either long side, `GAP` out) within `NEAR` m of b's top."""
+        """A place of a's pair within `NEAR` m of b's top."""
         t = by_id[a]
-        yaw = math.radians(float(t.get("yaw", 0.0)))
-        x, y = float(t["x"]), float(t["y"])
-        return any(tops[b].contains((x - s * GAP * math.sin(yaw), y + s * GAP * math.cos(yaw)), NEAR)
-                   for s in (1.0, -1.0))
+        return any(tops[b].contains(p, NEAR) for p in places(t, (float(t["x"]), float(t["y"]))))
 
     order = sorted(ways, key=lambda tid: (-blocks(tid), ways[tid].travel, tid))
     out: dict[str, list[str]] = {tid: [] for tid in order}

@@ -18,7 +18,7 @@ import math
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from hfsm_behaviours.room.walks import places
+from hfsm_behaviours.room.claims import places
 from hfsm_behaviours.tararc.grouping import Ties
 
 STAND = 0.6  # metres from a place beside a table within which a robot stands at that table

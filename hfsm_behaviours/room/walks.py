@@ -32,7 +32,7 @@ from typing import Any
 
 import networkx as nx
 
-from hfsm_behaviours.room.claims import GAP, Rect, way
+from hfsm_behaviours.room.claims import GAP, Rect, places, way
 from hfsm_behaviours.room.frames import at_wall
 
 Point = tuple[float, float]
@@ -84,13 +84,6 @@ def corridor(table: Mapping[str, Any], width: float, depth: float, reach: float 
     tx, ty = float(table["toward"][0]) - float(table["x"]), float(table["toward"][1]) - float(table["y"])
     sign = 1 if tx * math.cos(yaw) + ty * math.sin(yaw) >= 0 else -1
     return way(table, sign, width, depth, reach).corridor
-
-
-def places(table: Mapping[str, Any], at: Point, gap: float = GAP) -> list[Point]:
-    """The two places beside a table standing at `at`: the middles of its long sides, `gap` m out."""
-    yaw = math.radians(float(table.get("yaw", 0.0)))
-    nx_, ny_ = -math.sin(yaw), math.cos(yaw)
-    return [(at[0] + s * gap * nx_, at[1] + s * gap * ny_) for s in (1, -1)]
 
 
 def place_for(table: Mapping[str, Any], at: Point, me: Point, others: Sequence[Point],

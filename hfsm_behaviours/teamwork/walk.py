@@ -10,7 +10,7 @@ from typing import Any
 
 from hfsm.primitive import Context, Outcome, primitive
 from hfsm_behaviours.room.aside import aside
-from hfsm_behaviours.room.claims import Rect, footprint
+from hfsm_behaviours.room.claims import footprint
 from hfsm_behaviours.room.frames import to_local, to_room
 from hfsm_behaviours.room.walks import (
     Point,
@@ -109,13 +109,11 @@ def room_aside(ctx: Context, *, job: dict[str, Any], start: dict[str, Any], pose
     others = [p for r, p in sorted(said.items()) if r != ctx.agent]
     finished = {str(t) for t in done or []}
     own = str(job.get("table", "")) if job.get("role") in ("leader", "assistant") else ""
-    sights = seen or {}
-
-    def top(tid: str, t: dict[str, Any]) -> Rect:
-        sight = sights.get(tid)
-        return footprint(t, 0.0, table_where(t, False, [sight["x"], sight["y"]] if sight else None))
-    busy = tuple(top(tid, t) for tid, t in sorted(tables.items()) if tid not in finished and tid != own)
-    spot = aside(_scene(tables, done or [], seen or {}, others, room), (me[0], me[1]), busy=busy)
+    scene = _scene(tables, done or [], seen or {}, others, room)
+    # the scene's tops are the tables' in sorted order, where the team believes them
+    busy = tuple(top for tid, top in zip(sorted(tables), scene.tables, strict=True)
+                 if tid not in finished and tid != own)
+    spot = aside(scene, (me[0], me[1]), busy=busy)
     if spot == (me[0], me[1]):
         return Outcome("aside", spot=here)
     return Outcome("aside", spot=[round(v, 6) for v in to_local(start, spot)])
