@@ -32,6 +32,7 @@ from hfsm_behaviours.tararc.plan import Plan, after_losses
 
 PAIR = 2
 ROLES = ("leader", "assistant", "spare", "idle")
+TRIES = 4  # pairings of one table that may end without it at its wall before the team gives it up
 
 
 def _where(plan: Plan, robot: str) -> tuple[float, float]:
@@ -123,11 +124,36 @@ def sliding_partners(lost: Sequence[str], done: Sequence[str], spent: Sequence[s
     return kept
 
 
-def stranded(groups: Sequence[Mapping[str, Any]], done: Sequence[str], sliding: bool) -> dict[str, str]:
-    """When no pair is left for any table not yet done (fewer than two robots alive, no slide going
-    on): the first such table and why, which ends the room honestly; else {}."""
+def tried(done: Sequence[str], spent: Sequence[str], tables: Sequence[str],
+          tries: int = TRIES) -> dict[str, int]:
+    """The tables given up: not done, and `tries` pairings of them or more ended without them at their
+    wall (the channels named in `spent`, "CHANNEL/ROBOT", a channel being "TABLE_LEADER_ASSISTANT_"
+    and its tries), each with that count. Its robots are then free for the other tables, and once
+    only given-up tables are left the team ends `stuck` saying so (`stranded`), not at its time
+    limit (held-out room walls-40000: one pair searched for a table pushed off its place, try
+    after try, until the limit)."""
     finished = set(done)
+    channels: dict[str, set[str]] = {}
+    for entry in set(spent):
+        channel = entry.rpartition("/")[0]
+        for table in tables:
+            if table not in finished and channel.startswith(f"{table}_"):
+                channels.setdefault(table, set()).add(channel)
+    return {t: len(c) for t, c in sorted(channels.items()) if len(c) >= tries}
+
+
+def stranded(groups: Sequence[Mapping[str, Any]], done: Sequence[str], sliding: bool,
+             gone: Mapping[str, int] | None = None) -> dict[str, str]:
+    """When no pair is left for any table not yet done (fewer than two robots alive, no slide going
+    on), or every table not done was given up (`gone`, with its tries: `tried`): the first such
+    table and why, which ends the room honestly; else {}."""
+    given_up = dict(gone or {})
+    finished = set(done) | set(given_up)
     left = [g for g in groups if g["task"]["id"] not in finished]
+    if not left and given_up:
+        table = min(given_up, key=lambda t: (len(t), t))
+        n = given_up[table]
+        return {"stuck": table, "why": f"{table}: {n} tries by its pairs ended without it at its wall"}
     if not left or sliding or any(len(g["members"]) >= PAIR for g in left):
         return {}
     alive = sorted({m for g in groups for m in g["members"]}, key=lambda r: (len(r), r))
@@ -178,8 +204,10 @@ def job_of(plan: Plan, me: str, lost: Sequence[str], done: Sequence[str],
     if me in set(lost):
         return None
     slid = sliding_partners(lost, done, spent, sliding)
-    groups = lent(plan, replaced(plan, sorted(set(lost) - slid)), done)
-    place = place_of(me, groups, done)
+    gone = tried(done, spent, sorted(plan["tables"]))
+    over = [*done, *gone]
+    groups = lent(plan, replaced(plan, sorted(set(lost) - slid)), over)
+    place = place_of(me, groups, over)
     pair = place["table"], place["leader"], place["assistant"]
     channel = channel_of(*pair, spent) if place["leader"] else ""
-    return job_in(plan, me, place, channel, lost, done, seen, stranded(groups, done, bool(slid)), spent)
+    return job_in(plan, me, place, channel, lost, done, seen, stranded(groups, done, bool(slid), gone), spent)

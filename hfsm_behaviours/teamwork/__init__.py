@@ -19,6 +19,7 @@ from hfsm_behaviours.teamwork.recovery import (
     room_role,
     room_slides,
     room_stranded,
+    room_tried,
 )
 from hfsm_behaviours.teamwork.room import (
     room_allocate,
@@ -43,6 +44,7 @@ PRIMITIVES: tuple[Primitive, ...] = (
     room_allocate,
     room_slides,
     room_replace,
+    room_tried,
     room_lend,
     room_stranded,
     room_role,

@@ -43,11 +43,23 @@ def room_lend(ctx: Context, *, plan: dict[str, Any], groups: list[Any], done: li
     return Outcome("lent" if after != groups else "kept", groups=after)
 
 
+@primitive(outcomes=["counted"], outputs=["gone", "tries"])
+def room_tried(ctx: Context, *, done: list[Any], spent: list[Any], tables: dict[str, Any]) -> Outcome:
+    """The tables (of the plan's `tables`) the team gives up: not `done`, and `recovery.TRIES`
+    pairings or more `spent` without them at their wall. `gone`: their ids (their robots are free
+    for the other tables); `tries`: how many pairings each had."""
+    counts = recovery.tried(_strs(done), _strs(spent), sorted(str(t) for t in tables))
+    return Outcome("counted", gone=sorted(counts), tries=counts)
+
+
 @primitive(outcomes=["paired", "stuck"], outputs=["stuck"])
-def room_stranded(ctx: Context, *, groups: list[Any], done: list[Any], sliding: bool) -> Outcome:
-    """`stuck` when no pair is left for a table not yet done and nobody is `sliding` one alone:
-    `stuck` says which table and why (the room ends honestly)."""
-    left = recovery.stranded(groups, _strs(done), sliding)
+def room_stranded(ctx: Context, *, groups: list[Any], done: list[Any], sliding: bool,
+                  tries: dict[str, Any] | None = None) -> Outcome:
+    """`stuck` when no pair is left for a table not yet done and nobody is `sliding` one alone, or
+    when only tables given up are left (`tries`: room_tried's): `stuck` says which table and why
+    (the room ends honestly)."""
+    gone = {str(k): int(v) for k, v in (tries or {}).items()}
+    left = recovery.stranded(groups, _strs(done), sliding, gone)
     return Outcome("stuck" if left else "paired", stuck=left)
 
 

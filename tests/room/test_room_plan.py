@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from hfsm_behaviours.room.claims import Rect, claim_walls, overlap
 from hfsm_behaviours.room.frames import at_wall, difficulty_of, relocalise, to_local, to_room
 from hfsm_behaviours.room.plan import drawn, make_room_plan, tables_of
-from hfsm_behaviours.room.recovery import groups_after, job_of, slide_of, sliding_partners
+from hfsm_behaviours.room.recovery import TRIES, groups_after, job_of, slide_of, sliding_partners, tried
 
 ROOM = {"width": 7.0, "depth": 5.0}
 TASKS = [
@@ -222,6 +222,34 @@ def test_a_survivor_sliding_its_table_alone_is_not_stuck() -> None:
     assert job is not None and job["role"] == "leader"
     ended = job_of(plan, "r1", ["r2", "r3", "r4"], [], {}, [f"{channel}/r1"], [slide])
     assert ended is not None and ended["role"] == "stuck"  # the slide failed: nobody is left to help
+
+
+def tries_of(table: str, leader: str, assistant: str, n: int) -> list[str]:
+    """`spent` after `n` pairings of one pair on `table` that both robots gave up."""
+    base = f"{table}_{leader}_{assistant}_"
+    return [f"{base}{k}_/{r}" if k else f"{base}/{r}" for k in range(n) for r in (leader, assistant)]
+
+
+def test_a_table_tried_too_often_is_given_up_and_its_robots_help_the_others() -> None:
+    """Held-out room walls-40000: table3's pair, sent to a place the table had been pushed off, tried
+    again and again until the time limit. After TRIES pairings of one table ended without it at its
+    wall the team gives it up; its robots are free for the tables left, and once only given-up
+    tables are left the room ends `stuck`, saying which and why."""
+    plan = make_room_plan(FOUR, TASKS, ROOM)
+    assert tried([], tries_of("table1", "r1", "r2", TRIES - 1), ["table1", "table2"]) == {}
+    spent = tries_of("table1", "r1", "r2", TRIES)
+    assert tried([], spent, ["table1", "table2"]) == {"table1": TRIES}
+    assert tried(["table1"], spent, ["table1", "table2"]) == {}  # done after all
+    assert tried([], [f"{spent[0].split('/')[0]}/r1"] * 9, ["table1", "table10"]) == {}  # one channel is one try
+    mid = job_of(plan, "r2", ["r3"], [], {}, spent)  # table2 has lost r3: r2, nearer r4, helps it
+    assert mid is not None and (mid["role"], mid["table"], mid["partner"]) == ("assistant", "table2", "r4")
+    idle = job_of(plan, "r1", ["r3"], [], {}, spent)
+    assert idle is not None and idle["role"] == "idle"
+    ended = job_of(plan, "r2", [], ["table2"], {}, spent)
+    assert ended is not None and (ended["role"], ended["stuck"]) == ("stuck", "table1")
+    assert ended["why"] == f"table1: {TRIES} tries by its pairs ended without it at its wall"
+    going = job_of(plan, "r3", [], [], {}, spent)  # table2 not done yet: its pair carries on
+    assert going is not None and (going["role"], going["table"]) == ("leader", "table2")
 
 
 def test_what_the_monitor_draws_of_a_belief() -> None:
