@@ -7,7 +7,15 @@ import math
 from collections.abc import Callable
 
 from hfsm.primitive import Context, Outcome, primitive
-from hfsm_behaviours.approach.frames import Point, Side, body_to_odom, distance, nearest_side, sides
+from hfsm_behaviours.approach.frames import (
+    Point,
+    Side,
+    body_to_odom,
+    distance,
+    nearest_side,
+    sides,
+    table_frame,
+)
 from hfsm_behaviours.approach.navigate import (
     Guard,
     Look,
@@ -39,6 +47,7 @@ STRIDE = 0.75  # metres walked between two looks of the walk round
 PAUSE = 1.0  # seconds stood short of a thing in the way before looking again
 PATIENCE = 20  # looks stood short in all before the walk round gives up and squares up where it is
 MOVES = 120  # strides, stops and legs of one walk round at most
+CHANGES = 2  # changes of the end gone round after which the walk keeps the end it goes round
 
 Sense = Callable[[], list[Point]]
 
@@ -95,18 +104,31 @@ def free_move(body: Body, moves: list[Point], sense: Sense | None) -> Point | No
     return next(free, None)
 
 
+def end_of(rect: TableRect, points: list[Point]) -> float:
+    """The end of the table (+1 or -1 along its axis) a way round goes by: that of its first point
+    beyond an end; 0 when it goes straight to the side."""
+    ends = [x for x, _ in (table_frame(rect, p) for p in points[:-1]) if abs(x) > rect.length / 2]
+    return math.copysign(1.0, ends[0]) if ends else 0.0
+
+
 def walk_round(body: Body, rect: TableRect, target: Side, margin: float, gap: float, legs: int,
                refreshed: Callable[[TableRect], TableRect], sense: Sense | None) -> tuple[TableRect, Side]:
     """Walk round the table to `gap` out from the target side's middle, looking again at each
     corner. With `sense` (in a room): the way round whose legs the range finder sees free, in
     strides of STRIDE m, stopping short of a thing in the way of both (approach.way)."""
-    corners = stops = 0
+    corners = stops = changes = 0
+    went = keep = 0.0
     for _ in range(MOVES):
         if corners >= legs or stops >= PATIENCE:
             break
         here = body.odometry()[:2]
-        way = choose(rect, here, target, margin, gap, sense() if sense else [])
+        way = choose(rect, here, target, margin, gap, sense() if sense else [],
+                     keep=keep if changes >= CHANGES else 0.0)
         point = way.points[0]
+        end = end_of(rect, way.points)
+        if end != 0.0:
+            changes += went != 0.0 and end != went
+            went = keep = end
         if way.stop:
             walk_to(body, point)
             body.ctx.wait(PAUSE)

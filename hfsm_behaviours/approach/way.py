@@ -19,6 +19,8 @@ from hfsm_behaviours.approach.frames import Point, Side, from_table_frame, table
 from hfsm_sim.perception.table_rect import TableRect
 
 CLEAR = 0.45  # metres from a leg's line to the nearest point sensed of a thing for the leg to be free
+AHEAD = 1.2  # metres from the walker within which a thing sensed is taken into account (beyond, a
+#              wall's end clipped by the range or cut by robots before it reads as a thing)
 
 
 @dataclass(frozen=True)
@@ -116,12 +118,16 @@ def own_way(rect: TableRect, robot: Point) -> float:
 
 
 def choose(rect: TableRect, robot: Point, target: Side, margin: float, gap: float,
-           seen: list[Point], clear: float = CLEAR) -> Step:
-    """The way round to walk from `robot`, given the things `seen` (odometry frame): a free way
-    (the shorter of two), else a free step round the first thing in the way, else a stop short."""
-    own = route(rect, robot, target, margin, gap)
+           seen: list[Point], clear: float = CLEAR, keep: float = 0.0) -> Step:
+    """The way round to walk from `robot`, given the things `seen` (odometry frame) within AHEAD m:
+    a free way (the shorter of two), else a free step round the first thing in the way, else a stop
+    short. `keep` (+1 or -1): only that end of the table is gone round (a walker that has changed its
+    way too often)."""
+    seen = [p for p in seen if math.dist(p, robot) < AHEAD]
+    own = route(rect, robot, target, margin, gap, way=keep)
     other = route(rect, robot, target, margin, gap, way=-own_way(rect, robot))
-    candidates = [own] if other == own else sorted((own, other), key=lambda pts: length(robot, pts))
+    alone = other == own or keep != 0.0
+    candidates = [own] if alone else sorted((own, other), key=lambda pts: length(robot, pts))
     blocks = [first_block(robot, pts, seen, clear) for pts in candidates]
     for pts, block in zip(candidates, blocks, strict=True):
         if block is None:

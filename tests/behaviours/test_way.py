@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from hfsm_behaviours.approach.frames import Point, Side, from_table_frame, sides, table_frame
-from hfsm_behaviours.approach.way import CLEAR, choose, first_block, in_way, route, short_of
+from hfsm_behaviours.approach.way import AHEAD, CLEAR, choose, first_block, in_way, route, short_of
 from hfsm_sim.perception.table_rect import TableRect
 
 TABLE = TableRect(True, x=1.0, y=2.0, axis=0.3, length=1.2, width=0.6)
@@ -88,16 +88,26 @@ points = st.tuples(st.floats(-2.5, 2.5), st.floats(-2.5, 2.5))
 @settings(max_examples=200, deadline=None)
 @given(x=st.floats(-2.0, 2.0), y=st.floats(-2.0, -0.6), seen=st.lists(points, max_size=6),
        axis=st.floats(-math.pi, math.pi))
-def test_a_way_walked_has_no_thing_sensed_in_its_way(x: float, y: float, seen: list[Point],
+def test_a_way_walked_has_no_thing_sensed_near_in_its_way(x: float, y: float, seen: list[Point],
                                                      axis: float) -> None:
     rect = TableRect(True, x=0.0, y=0.0, axis=axis, length=1.0, width=0.6)
     robot = at(rect, x, y)
     if abs(x) < 0.5 + 0.05 and abs(y) < 0.3 + 0.05:
         return
     step = choose(rect, robot, far_side(rect), MARGIN, GAP, seen)
+    seen = [p for p in seen if math.dist(p, robot) < AHEAD]  # the rest is read later, from nearer
     if step.stop:
         ahead = [p for p in seen if in_way(p, robot, step.points[0], CLEAR)]
         assert all(math.dist(robot, p) < CLEAR or math.dist(step.points[0], p) >= CLEAR - 1e-6 for p in ahead)
     else:
         assert first_block(robot, step.points, seen, CLEAR) is None
         assert local(rect, step.points)[-1] == (0.0, 0.65)
+
+
+def test_things_beyond_ahead_are_left_out_and_a_kept_end_is_the_only_one() -> None:
+    robot = at(TABLE, 0.3, -1.2)
+    far = at(TABLE, 1.1, 0.8)  # on the near end's second corner, 2 m away: read later, from nearer
+    assert local(TABLE, choose(TABLE, robot, far_side(TABLE), MARGIN, GAP, [far]).points)[0][0] > 0
+    waiting = at(TABLE, 1.0, -0.85)
+    kept = choose(TABLE, robot, far_side(TABLE), MARGIN, GAP, [waiting], keep=1.0)
+    assert all(x >= 0 for x, _ in local(TABLE, kept.points))
