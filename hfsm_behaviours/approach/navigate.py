@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from hfsm_behaviours.approach.frames import Point, Side, bearing_to, distance, nearest_side, wrap
@@ -70,12 +71,17 @@ def refresh(body: Body, rect: TableRect, look: Look, known: TableRect | None = N
     return fresh if agrees(fresh, known or rect, look.size_tolerance) else rect
 
 
-def square_up(body: Body, side: Side, gap: float) -> None:
-    """Face the table across `side`, then walk and crab to `gap` out from its middle."""
+Guard = Callable[[Point], float]  # a move (forward, left m, body frame) -> the share of it that is free
+
+
+def square_up(body: Body, side: Side, gap: float, guard: Guard | None = None) -> None:
+    """Face the table across `side`, then walk and crab to `gap` out from its middle (with a
+    `guard`, each move only as far as it lets)."""
     turn_to(body, side.facing())
     along, out = side.offset(body.odometry()[:2])
-    body.walk(out - gap)
-    body.crab(along)
+    walk = out - gap
+    body.walk(walk * (guard((walk, 0.0)) if guard else 1.0))
+    body.crab(along * (guard((0.0, along)) if guard else 1.0))
 
 
 def errors(body: Body, side: Side, gap: float) -> tuple[float, float, float]:
@@ -91,7 +97,7 @@ def within(errs: tuple[float, float, float], tol: Tolerance) -> bool:
 
 
 def align_to_side(body: Body, rect: TableRect, near: Point, gap: float, look: Look,
-                  tol: Tolerance, tries: int, known: TableRect | None = None
+                  tol: Tolerance, tries: int, known: TableRect | None = None, guard: Guard | None = None
                   ) -> tuple[TableRect, Side, bool]:
     """Look, then square up on the long side nearest to `near`, until within tolerance.
     Returns the last rectangle, the side and whether the tolerance was met."""
@@ -101,7 +107,7 @@ def align_to_side(body: Body, rect: TableRect, near: Point, gap: float, look: Lo
         side = nearest_side(rect, side.middle)
         if within(errors(body, side, gap), tol):
             return rect, side, True
-        square_up(body, side, gap)
+        square_up(body, side, gap, guard)
     return rect, side, within(errors(body, side, gap), tol)
 
 
