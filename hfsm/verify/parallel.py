@@ -146,7 +146,7 @@ class _Worker:
         with contextlib.suppress(OSError):  # a worker that died has closed its end
             self.conn.send(None)
         self.conn.close()
-        self.process.join(timeout=5)
+        self.process.join(timeout=1)  # it may be running a chunk the search no longer needs
         if self.process.is_alive():
             self.process.kill()
             self.process.join()
@@ -157,14 +157,19 @@ def _serve(conn: Connection, search: Search[Any]) -> None:
     while True:
         try:
             chunk = conn.recv()
-        except EOFError:
+        except (EOFError, OSError):
             return
         if chunk is None:
             return
+        answer: list[list[Reached]] | str
         try:
-            conn.send([successors(search, data) for data in chunk])
+            answer = [successors(search, data) for data in chunk]
         except Exception:  # told to the search, which raises it
-            conn.send(traceback.format_exc())
+            answer = traceback.format_exc()
+        try:
+            conn.send(answer)
+        except OSError:  # the search stopped (a violation, its budget) and closed its end
+            return
 
 
 def run(search: Search[Result], workers: int, first: Callable[[], Run]) -> Result:

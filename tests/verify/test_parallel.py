@@ -87,3 +87,20 @@ def test_workers_must_be_one_or_more(capsys: pytest.CaptureFixture[str], tmp_pat
     code, found = verify(capsys, DATA / "handshake.yaml", "--workers", workers, out=tmp_path / "ce.jsonl")
     assert code == 2
     assert "--workers" in found["stderr"] and "Traceback" not in found["stderr"]
+
+
+def test_workers_stopped_at_a_violation_leave_nothing_on_stderr(tmp_path: Path) -> None:
+    """The search stops at the first violation while its workers still run chunks it no longer
+    needs: they end quietly, however far they got."""
+    import subprocess
+    import sys
+
+    done = subprocess.run(
+        [sys.executable, "-m", "hfsm.cli.verify", str(MACHINES / "move_furniture.yaml"), "--agents", "r1,r2",
+         "--loss", "1", "--fail", "1", "--bound", "5", "--workers", "2", "--json",
+         "--out", str(tmp_path / "ce.jsonl")],
+        capture_output=True, text=True, check=False,
+    )  # fmt: skip
+    assert done.returncode == 1, done.stderr
+    assert '"kind": "hang"' in done.stdout
+    assert "Traceback" not in done.stderr and "Error" not in done.stderr
