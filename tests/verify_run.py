@@ -67,15 +67,15 @@ def reached_states(
     """States searches reach (as their copies' bytes, at most `each` a search, none ended), each with
     the search that made it (kept open, so that its copies still load)."""
     found: list[tuple[bytes, Any]] = []
-    visit = search._Search.visit
+    visit = search.Search.visit
 
-    def recording(self: search._Search, engine: Any, ended: Any, parent: int) -> bool:
+    def recording(self: search.Search, engine: Any, ended: Any, parent: int) -> bool:
         if ended is None and engine.running and sum(s is self for _, s in found) < each:
             found.append((self.snaps.dump(engine), self))
         return visit(self, engine, ended, parent)
 
     with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(search._Search, "visit", recording)
+        patch.setattr(search.Search, "visit", recording)
         patch.setattr(snapshot.Snapshots, "close", lambda self: None)
         for file, args in runs:
             verify(NoCapture(), file, *args, "--max-states", str(max_states), out=folder / "ce.jsonl")  # type: ignore[arg-type]

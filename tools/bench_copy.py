@@ -43,15 +43,15 @@ def _states(args: list[str]) -> tuple[list[Any], dict[int, Any]]:
     """Engines the search reaches (copies of them, by this code), and what its states share."""
     reached: list[bytes] = []
     made: list[Any] = []
-    visit = search._Search.visit
+    visit = search.Search.visit
 
-    def recording(self: search._Search, engine: Any, ended: Any, parent: int) -> bool:
+    def recording(self: search.Search, engine: Any, ended: Any, parent: int) -> bool:
         if ended is None and engine.running:
             reached.append(self.snaps.dump(engine))
             made.append(self)
         return visit(self, engine, ended, parent)
 
-    search._Search.visit = recording  # type: ignore[method-assign]
+    search.Search.visit = recording  # type: ignore[method-assign]
     close = snapshot.Snapshots.close
     snapshot.Snapshots.close = lambda self: None  # type: ignore[method-assign]
     try:
@@ -62,7 +62,7 @@ def _states(args: list[str]) -> tuple[list[Any], dict[int, Any]]:
         ):
             verify_cli.main([*args, "--json", "--out", str(Path(folder) / "ce.jsonl")])
     finally:
-        search._Search.visit = visit  # type: ignore[method-assign]
+        search.Search.visit = visit  # type: ignore[method-assign]
         snapshot.Snapshots.close = close  # type: ignore[method-assign]
     found = made[0]
     step = max(1, len(reached) // KEEP)

@@ -55,6 +55,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--max-states", type=_count, default=1_000_000, metavar="N", help="stop after N states")
     p.add_argument("--max-seconds", type=_seconds, metavar="S", help="stop after S seconds of search")
     p.add_argument(
+        "--workers", type=_workers, default=1, metavar="N",
+        help="processes that run the states' ticks (default 1; the same verdict and counterexample)",
+    )
+    p.add_argument(
         "--keys",
         choices=("bytes", "values"),
         default="bytes",
@@ -73,6 +77,13 @@ def build_parser() -> argparse.ArgumentParser:
     )
     p.add_argument("--json", action="store_true", help="print one JSON object on stdout")
     return p
+
+
+def _workers(text: str) -> int:
+    value = _count(text)
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"{text!r}: a whole number >= 1")
+    return value
 
 
 def _count(text: str) -> int:
@@ -148,7 +159,7 @@ def _main(args: argparse.Namespace) -> int:
     failures = top.model.failure_outcomes
     check = Properties(failures, args.goal == "success", props, bound)
     timeless = unobserved(loaded, bool(props and props.left_within)) if args.keys == "values" else None
-    result = explore(program, options, budget, check, chooser, inputs, timeless)
+    result = explore(program, options, budget, check, chooser, inputs, timeless, args.workers)
     out = args.out or args.file.with_name(args.file.stem + ".ce.jsonl")
     verdict: dict[str, Any] = {
         "verdict": "ok" if result.exhausted else "bounded",

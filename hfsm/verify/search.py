@@ -19,8 +19,10 @@ from typing import Any
 from hfsm.runtime.engine import Engine
 from hfsm.runtime.program import Program
 from hfsm.runtime.run import RunOptions
+from hfsm.verify import parallel
 from hfsm.verify.canon import Keys
 from hfsm.verify.choices import Choice, Chooser
+from hfsm.verify.parallel import Run
 from hfsm.verify.radio import ChoosingWorld, Given
 from hfsm.verify.snapshot import Snapshots, digest, shared_numbers, shared_objects
 from hfsm.verify.step import Ended, discard, first_state, next_state
@@ -76,25 +78,30 @@ def explore(
     chooser: Chooser,
     inputs: dict[str, Any],
     unobserved: frozenset[str] | None = None,
+    workers: int = 1,
 ) -> Outcome:
     """Search from tick 0; `program`'s stand-ins must ask `chooser`. A state's key is the hash of
     its copy's bytes, or with `unobserved` (a frame's times that nothing reads, `build.unobserved`)
-    written by value (`canon.Keys`, docs/VERIFY.md)."""
+    written by value (`canon.Keys`, docs/VERIFY.md). With `workers` > 1, the ticks are run by that
+    many processes (`parallel`)."""
     given = Given(inputs)
-    search = _Search(program, budget, check, chooser, given, unobserved)
+    search = Search(program, budget, check, chooser, given, unobserved)
     threshold = gc.get_threshold()
     gc.collect()
     gc.freeze()  # the program and everything loaded before: never scanned again while states churn
     gc.set_threshold(GC_YOUNG, *threshold[1:])
     try:
-        return search.run(lambda: _first(program, options, chooser, budget, given))
+        first = lambda: _first(program, options, chooser, budget, given)  # noqa: E731
+        if workers > 1:
+            return parallel.run(search, workers, first)
+        return search.run(first)
     finally:
         gc.set_threshold(*threshold)
         gc.unfreeze()
         search.snaps.close()
 
 
-class _Search:
+class Search:
     def __init__(
         self,
         program: Program,
@@ -121,12 +128,12 @@ class _Search:
         self.live = 0  # engines in the queue
 
     def run(self, first: Callable[[], tuple[Engine, Ended | None]]) -> Outcome:
-        for engine, ended in _all_prefixes(self.chooser, first):
+        for engine, ended in self.roots(first):
             if not self.visit(engine, ended, -1):
                 return self.done(False)
         chooser, snaps, last = self.chooser, self.snaps, self.budget.last_tick
         while self.queue:
-            if self.explored >= self.budget.max_states or self._late():
+            if self.over():
                 return self.done(False)
             index, data, live = self.queue.popleft()
             if live is not None:
@@ -147,22 +154,32 @@ class _Search:
                     pending, chooser.held = chooser.held, []
         return self.done(True)
 
-    def _late(self) -> bool:
+    @property
+    def last_tick(self) -> int:
+        return self.budget.last_tick
+
+    @property
+    def top_outcomes(self) -> set[str]:
+        return self.result.top_outcomes
+
+    def roots(self, first: Callable[[], Run]) -> Iterator[Run]:
+        """Tick 0, once for every choice made in it."""
+        return _all_prefixes(self.chooser, first)
+
+    def over(self) -> bool:
+        """Whether the budget of states or of seconds is spent."""
+        if self.explored >= self.budget.max_states:
+            return True
         return time.perf_counter() - self.started > self.budget.max_seconds
 
     def visit(self, engine: Engine, ended: Ended | None, parent: int) -> bool:
         """Record a state reached; False when it violates a property (result.violation set). An
         engine not queued is discarded (`step.discard`)."""
         made = list(self.chooser.made)
-        result = self.result
-        for agent in engine.agents:
-            if agent.result is not None and agent.result.failed is None and agent.result.outcome:
-                result.top_outcomes.add(agent.result.outcome)
+        self.reached(engine)
         found = self.check(engine, ended)
         if found is not None:
-            self.nodes.append(_Node(parent, made))
-            result.violation = Violation(*found, engine.tick, _path(self.nodes, len(self.nodes) - 1))
-            return False
+            return self.violated(found, engine.tick, parent, made)
         if ended is not None or engine.running == 0:
             self.ends += 1
             discard(engine)
@@ -172,22 +189,44 @@ class _Search:
             key = digest(data)
         else:
             key = self.key(engine)
-        explored = self.seen.get(key)
-        if explored is not None and explored >= engine.tick:
+        if not self.fresh(key, engine.tick):
             discard(engine)
-            return True  # the same situation, as late or later: its runs cover this one's (docs/VERIFY.md)
-        self.seen[key] = engine.tick
-        self.explored += 1
+            return True
         if self.key is not None:
             data = self.snaps.dump(engine)
-        self.nodes.append(_Node(parent, made))
+        index = self.queued(parent, made)
         if self.live < self.live_cap:
             self.live += 1
-            self.queue.append((len(self.nodes) - 1, data, engine))
+            self.queue.append((index, data, engine))
         else:
-            self.queue.append((len(self.nodes) - 1, data, None))
+            self.queue.append((index, data, None))
             discard(engine)
         return True
+
+    def reached(self, engine: Engine) -> None:
+        """The top outcomes its agents ended in."""
+        for agent in engine.agents:
+            if agent.result is not None and agent.result.failed is None and agent.result.outcome:
+                self.result.top_outcomes.add(agent.result.outcome)
+
+    def violated(self, found: tuple[str, str, str], tick: int, parent: int, made: list[Choice]) -> bool:
+        self.nodes.append(_Node(parent, made))
+        self.result.violation = Violation(*found, tick, _path(self.nodes, len(self.nodes) - 1))
+        return False
+
+    def fresh(self, key: bytes, tick: int) -> bool:
+        """Whether a state of `key` at `tick` is to be explored: not met yet, or only later (a state
+        met again as late or later has its runs covered by the earlier one's, docs/VERIFY.md)."""
+        explored = self.seen.get(key)
+        if explored is not None and explored >= tick:
+            return False
+        self.seen[key] = tick
+        self.explored += 1
+        return True
+
+    def queued(self, parent: int, made: list[Choice]) -> int:
+        self.nodes.append(_Node(parent, made))
+        return len(self.nodes) - 1
 
     def done(self, exhausted: bool) -> Outcome:
         result = self.result

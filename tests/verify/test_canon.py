@@ -76,16 +76,16 @@ def _states(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> tuple[list[An
     """Engines the search of the paper's handshake reaches (copies, as bytes), and its snapshots."""
     found: list[bytes] = []
     kept: dict[str, Any] = {}
-    visit = search._Search.visit
+    visit = search.Search.visit
 
-    def recording(self: search._Search, engine: Any, ended: Any, parent: int) -> bool:
+    def recording(self: search.Search, engine: Any, ended: Any, parent: int) -> bool:
         kept["search"] = self
         if ended is None and engine.running and len(found) < 60:
             found.append(self.snaps.dump(engine))
         return visit(self, engine, ended, parent)
 
     with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(search._Search, "visit", recording)
+        patch.setattr(search.Search, "visit", recording)
         patch.setattr(snapshot.Snapshots, "close", lambda self: None)
         args = ["--agents", "a,b", "--loss", "1", "--fail", "1", "--delay", "1", "--max-states", "300"]
         args += ["--keys", "values"]
