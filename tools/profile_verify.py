@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Any
 
 from hfsm.cli import verify as verify_cli
-from hfsm.verify import search, snapshot
+from hfsm.verify import search, snapshot, step
 
 ROOT = Path(__file__).resolve().parent.parent
 DEFAULT = [str(ROOT / "machines" / "move_furniture.yaml"), "--agents", "r1,r2", "--loss", "1", "--fail", "1",
@@ -58,7 +58,7 @@ def main(argv: list[str]) -> int:
     with (
         tempfile.TemporaryDirectory() as folder,
         Part(search, "explore") as explore,
-        Part(search, "next_state") as tick,
+        Part(step, "next_state") as tick,
         Part(snapshot.Snapshots, "dump") as dump,
         Part(snapshot.Snapshots, "load") as load,
         Part(search, "digest") as digest,

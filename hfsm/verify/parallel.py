@@ -3,7 +3,7 @@
 The search (`search.Search`) keeps the queue, the keys seen and the tree of choices; it sends the
 states at the head of its queue, as bytes, to worker processes forked from it (so they hold the
 very program, stand-ins and table of shared objects its copies refer to). A worker loads each
-state, runs every successor (`successors`), and sends back for each what the search needs to
+state, runs every successor (`answers`), and sends back for each what the search needs to
 decide: the choices made, the outcomes reached, a violation, or the key and bytes of the state
 reached. The search takes the answers in the order of its queue, as it would have run them itself,
 so what it explores, finds and reports is the same whatever the number of workers; only, every
@@ -27,7 +27,7 @@ from typing import Any, Protocol, TypeAlias, TypeVar
 from hfsm.runtime.engine import Engine
 from hfsm.verify.choices import Choice, Chooser
 from hfsm.verify.snapshot import Snapshots, digest
-from hfsm.verify.step import Ended, discard, next_state
+from hfsm.verify.step import Ended, discard, successors, top_outcomes
 
 # What a worker says of one successor: the choices made, the top outcomes reached, a violation
 # (kind, agent, text), the key and bytes of the state reached (None: the run ended), its tick.
@@ -71,33 +71,21 @@ CHUNK = 32  # states sent to a worker at once
 AHEAD = 2  # chunks a worker may hold, so that it never waits for the search
 
 
-def successors(search: Search[Any], data: bytes) -> list[Reached]:
-    """Every successor of the state `data`, in the order the search on one process runs them; after
-    a violation, none more (the search stops there)."""
-    chooser, snaps, last = search.chooser, search.snaps, search.last_tick
+def answers(search: Search[Any], data: bytes) -> list[Reached]:
+    """What the search needs of every successor of the state `data`, in the order it runs them;
+    after a violation, none more (the search stops there)."""
+    snaps = search.snaps
     found: list[Reached] = []
-    pending: list[tuple[int, ...]] = [()]
-    chooser.held, chooser.restore = [], False
-    while pending:
-        chooser.begin(pending.pop())
-        engine = snaps.load(data)
-        ended = next_state(engine, engine.world, chooser, last)
-        pending.extend(chooser.siblings())
-        reached = _reached(search, engine, ended)
-        found.append(reached)
-        if reached[2] is not None:
+    for engine, ended in successors(search.chooser, lambda: snaps.load(data), search.last_tick):
+        found.append(_reached(search, engine, ended))
+        if found[-1][2] is not None:
             break
-        if not pending and chooser.restore and chooser.held:
-            pending, chooser.held = chooser.held, []
     return found
 
 
 def _reached(search: Search[Any], engine: Engine, ended: Ended | None) -> Reached:
     made = list(search.chooser.made)
-    outcomes = tuple(
-        a.result.outcome for a in engine.agents
-        if a.result is not None and a.result.failed is None and a.result.outcome
-    )
+    outcomes = tuple(top_outcomes(engine))
     violation = search.check(engine, ended)
     key = data = None
     if violation is None and ended is None and engine.running > 0:
@@ -163,7 +151,7 @@ def _serve(conn: Connection, search: Search[Any]) -> None:
             return
         answer: list[list[Reached]] | str
         try:
-            answer = [successors(search, data) for data in chunk]
+            answer = [answers(search, data) for data in chunk]
         except Exception:  # told to the search, which raises it
             answer = traceback.format_exc()
         try:

@@ -25,7 +25,7 @@ from hfsm.verify.choices import Choice, Chooser
 from hfsm.verify.parallel import Run
 from hfsm.verify.radio import ChoosingWorld, Given
 from hfsm.verify.snapshot import Snapshots, digest, shared_numbers, shared_objects
-from hfsm.verify.step import Ended, discard, first_state, next_state
+from hfsm.verify.step import Ended, discard, first_state, successors, top_outcomes
 
 # A property looked at after each tick: a violation as (kind, agent, text), or None.
 Check = Callable[[Engine, "Ended | None"], "tuple[str, str, str] | None"]
@@ -138,20 +138,9 @@ class Search:
             index, data, live = self.queue.popleft()
             if live is not None:
                 self.live -= 1
-            pending: list[tuple[int, ...]] = [()]
-            chooser.held, chooser.restore = [], False
-            while pending:
-                chooser.begin(pending.pop())
-                if live is not None:  # the state itself, unused yet: no copy to make
-                    engine, live = live, None
-                else:
-                    engine = snaps.load(data)
-                ended = next_state(engine, engine.world, chooser, last)  # type: ignore[arg-type]
-                pending.extend(chooser.siblings())
+            for engine, ended in successors(chooser, _first_itself(live, snaps, data), last):
                 if not self.visit(engine, ended, index):
                     return self.done(False)
-                if not pending and chooser.restore and chooser.held:
-                    pending, chooser.held = chooser.held, []
         return self.done(True)
 
     @property
@@ -176,7 +165,7 @@ class Search:
         """Record a state reached; False when it violates a property (result.violation set). An
         engine not queued is discarded (`step.discard`)."""
         made = list(self.chooser.made)
-        self.reached(engine)
+        self.result.top_outcomes.update(top_outcomes(engine))
         found = self.check(engine, ended)
         if found is not None:
             return self.violated(found, engine.tick, parent, made)
@@ -203,11 +192,6 @@ class Search:
             discard(engine)
         return True
 
-    def reached(self, engine: Engine) -> None:
-        """The top outcomes its agents ended in."""
-        for agent in engine.agents:
-            if agent.result is not None and agent.result.failed is None and agent.result.outcome:
-                self.result.top_outcomes.add(agent.result.outcome)
 
     def violated(self, found: tuple[str, str, str], tick: int, parent: int, made: list[Choice]) -> bool:
         self.nodes.append(_Node(parent, made))
@@ -246,6 +230,21 @@ def _first(
     for agent in made.agents:
         agent.rng = _RNG  # no stand-in or built-in draws from it: one for all, shared by every state
     return made, None
+
+
+def _first_itself(live: Engine | None, snaps: Snapshots, data: bytes) -> Callable[[], Engine]:
+    """A queued state for each run of its tick: the engine itself first when it was queued whole
+    (unused yet: no copy to make), then copies loaded from `data`."""
+
+    def engine_for() -> Engine:
+        nonlocal live
+        if live is not None:
+            engine, live = live, None
+            return engine
+        copy: Engine = snaps.load(data)
+        return copy
+
+    return engine_for
 
 
 def _all_prefixes(

@@ -4,7 +4,7 @@ chosen for the tick, then what arrives, then each agent's turn."""
 from __future__ import annotations
 
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from itertools import combinations
 from typing import Any
@@ -82,6 +82,32 @@ def next_state(engine: Engine, world: ChoosingWorld, decider: Decider, last: int
         decider.restore = True  # an agent ended: a failure deferred in this tick may not come later
     _forget(engine)
     return None
+
+
+def successors(
+    chooser: Chooser, engine_for: Callable[[], Engine], last: int
+) -> Iterator[tuple[Engine, Ended | None]]:
+    """Every run of one state's next tick, once for each combination of its choices, in the order
+    the search takes them; `engine_for()` gives the state afresh for each run. The failures the tick
+    put off are run too when one of its runs ended an agent (`Chooser.restore`, docs/VERIFY.md,
+    *Failures that change nothing*). A consumer may stop early (at a violation)."""
+    pending: list[tuple[int, ...]] = [()]
+    chooser.held, chooser.restore = [], False
+    while pending:
+        chooser.begin(pending.pop())
+        engine = engine_for()
+        ended = next_state(engine, engine.world, chooser, last)  # type: ignore[arg-type]
+        pending.extend(chooser.siblings())
+        yield engine, ended
+        if not pending and chooser.restore and chooser.held:
+            pending, chooser.held = chooser.held, []
+
+
+def top_outcomes(engine: Engine) -> Iterator[str]:
+    """The outcomes of the top machine its agents ended in (not by failing)."""
+    for agent in engine.agents:
+        if agent.result is not None and agent.result.failed is None and agent.result.outcome:
+            yield agent.result.outcome
 
 
 def acting(engine: Engine, world: ChoosingWorld, before: int, tick: int) -> set[str]:

@@ -12,7 +12,7 @@ import yaml
 from verify_run import DATA, MACHINES, verify
 
 from hfsm.cli import verify as verify_cli
-from hfsm.verify import parallel, search
+from hfsm.verify import parallel, search, step
 
 CORPUS: dict[str, list[dict[str, Any]]] = yaml.safe_load((DATA / "corpus.yaml").read_text())
 CASES = [(c["machine"], [*c["args"], *c.get("trigger", [])]) for c in CORPUS["buggy"] + CORPUS["correct"]]
@@ -75,7 +75,7 @@ def test_a_worker_that_fails_stops_the_search_with_its_error(
     def broken(*args: Any) -> None:
         raise ValueError("a tick that cannot run")
 
-    monkeypatch.setattr(parallel, "next_state", broken)  # the workers are forked with it
+    monkeypatch.setattr(step, "next_state", broken)  # the workers are forked with it; the search runs no tick
     with pytest.raises(RuntimeError, match="a tick that cannot run"):
         verify_cli._main(verify_cli.build_parser().parse_args(
             [str(DATA / "handshake.yaml"), "--agents", "a,b", "--loss", "1", "--workers", "2",
