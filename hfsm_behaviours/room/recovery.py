@@ -94,13 +94,19 @@ def channel_of(table: str, leader: str, assistant: str, spent: Sequence[str]) ->
     table at a wall), the number k: the pair tries again on a new channel only once both know the
     last try is over."""
     base = f"{table}_{leader}_{assistant}_"
+    pair = {leader, assistant}
+    spent_by = spent_channels(spent)
+    tries = sum(1 for channel, robots in spent_by.items() if channel.startswith(base) and pair <= robots)
+    return f"{base}{tries}_" if tries else base
+
+
+def spent_channels(spent: Sequence[str]) -> dict[str, set[str]]:
+    """Each channel named in `spent` ("CHANNEL/ROBOT"), with the robots that said it spent."""
     by: dict[str, set[str]] = {}
     for entry in set(spent):
         channel, _, robot = entry.rpartition("/")
-        if channel.startswith(base):
-            by.setdefault(channel, set()).add(robot)
-    tries = sum(1 for robots in by.values() if {leader, assistant} <= robots)
-    return f"{base}{tries}_" if tries else base
+        by.setdefault(channel, set()).add(robot)
+    return by
 
 
 def slide_of(table: str, channel: str, robot: str, partner: str) -> str:
@@ -134,8 +140,7 @@ def tried(done: Sequence[str], spent: Sequence[str], tables: Sequence[str],
     after try, until the limit)."""
     finished = set(done)
     channels: dict[str, set[str]] = {}
-    for entry in set(spent):
-        channel = entry.rpartition("/")[0]
+    for channel in spent_channels(spent):
         for table in tables:
             if table not in finished and channel.startswith(f"{table}_"):
                 channels.setdefault(table, set()).add(channel)
