@@ -87,6 +87,7 @@ def test_workers_must_be_one_or_more(capsys: pytest.CaptureFixture[str], tmp_pat
     code, found = verify(capsys, DATA / "handshake.yaml", "--workers", workers, out=tmp_path / "ce.jsonl")
     assert code == 2
     assert "--workers" in found["stderr"] and "Traceback" not in found["stderr"]
+    assert f"{workers!r}: a whole number >= 1" in found["stderr"]
 
 
 def test_workers_stopped_at_a_violation_leave_nothing_on_stderr(tmp_path: Path) -> None:
